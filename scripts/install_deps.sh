@@ -1,0 +1,22 @@
+#!/usr/bin/env bash
+# Installs the Debian 12 packages gaitsynth needs, only those that are missing.
+#   scripts/install_deps.sh [--tests]   (--tests adds what only the test suite needs)
+set -euo pipefail
+pkgs=(g++ cmake ninja-build libeigen3-dev libboost-dev nlohmann-json3-dev)
+if [[ "${1:-}" == "--tests" ]]; then
+  # catch2 2.13: tests; libbenchmark-dev: benchmarks (built to keep them compiling);
+  # libmujoco-dev: rigid-body oracle and benchmark peer; chromium: headless player test;
+  # python3: plot scripts.
+  pkgs+=(catch2 libbenchmark-dev libmujoco-dev chromium python3)
+fi
+missing=()
+for p in "${pkgs[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+if ((${#missing[@]})); then
+  echo "gaitsynth: installing ${missing[*]}"
+  SUDO=""
+  [[ $(id -u) -ne 0 ]] && SUDO="sudo"
+  $SUDO apt-get update -qq
+  DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
+fi
