@@ -1,0 +1,72 @@
+#pragma once
+/// \file actuators/concept.hpp
+/// The actuator policy (docs/architecture.md): maps a controller command to joint torques.
+///
+/// Valid expressions (A: actuator type, a: const A&, m: const model<Root>&, s: const sim_state&,
+/// cmd: Eigen::Ref<const Eigen::VectorXd>, st: A::state_type&, tau: Eigen::Ref<Eigen::VectorXd>):
+///
+///   A::state_type            its own evolving state (muscle activation, fiber length); an empty
+///                            struct (no_actuator_state) for stateless actuators
+///   a.make_state(m)          -> A::state_type (set-up; may allocate; validates sizes vs. the
+///   model) a.command_size(m)        -> int, length of the command vector the controller writes
+///   a.input_kind()           -> command_kind, what the command means
+///   a.torques(m, s, cmd, st, tau)
+///                            writes the joint torques (size num_joint_dofs, N m; the root is
+///                            unactuated) for state s and command cmd. A pure function of its
+///                            inputs (RBDL's Millard2016TorqueMuscle::calcJointTorque is const
+///                            with activation as an input); must not allocate.
+///
+/// Optional hooks for actuators with dynamics, detected with requires:
+///   a.advance(m, s, cmd, st, dt)       advance st over one physics step (the actuator integrates
+///                                      itself, e.g. activation dynamics, exactly or implicitly)
+///   a.derivative(m, s, cmd, st, dst)   d(st)/dt into dst (same type as st); the rollout then takes
+///                                      an explicit Euler step st += dt * dst (st must support it)
+/// The rollout calls advance (or the derivative step) after the physics integration step, with
+/// the state and command the torques were computed from (zero-order hold, like the torques).
+#include <Eigen/Core>
+#include <concepts>
+
+#include "gaitsynth/model/model.hpp"
+#include "gaitsynth/model/state.hpp"
+
+namespace gaitsynth {
+
+/// What an actuator command vector means.
+enum class command_kind {
+  joint_torque,  ///< N m per joint DOF
+  joint_target,  ///< target angle per joint DOF (rad), optionally followed by feed-forward torques
+  excitation     ///< neural excitation per muscle in [0, 1]
+};
+
+/// The state of an actuator that has none.
+struct no_actuator_state {};
+
+template <class A, class Root>
+concept actuator = root_joint<Root> &&
+    requires(const A& a, const model<Root>& m, const sim_state& s,
+             Eigen::Ref<const Eigen::VectorXd> cmd, typename A::state_type& st,
+             Eigen::Ref<Eigen::VectorXd> tau) {
+  typename A::state_type;
+  { a.make_state(m) } -> std::same_as<typename A::state_type>;
+  { a.command_size(m) } -> std::convertible_to<int>;
+  { a.input_kind() } -> std::same_as<command_kind>;
+  a.torques(m, s, cmd, st, tau);
+};
+
+template <class A, class Root>
+concept actuator_with_advance = requires(const A& a, const model<Root>& m, const sim_state& s,
+                                         Eigen::Ref<const Eigen::VectorXd> cmd,
+                                         typename A::state_type& st, double dt) {
+  a.advance(m, s, cmd, st, dt);
+};
+
+template <class A, class Root>
+concept actuator_with_derivative = requires(const A& a, const model<Root>& m, const sim_state& s,
+                                            Eigen::Ref<const Eigen::VectorXd> cmd,
+                                            typename A::state_type& st,
+                                            typename A::state_type& dst) {
+  a.derivative(m, s, cmd, st, dst);
+  st += 1.0 * dst;
+};
+
+}  // namespace gaitsynth
