@@ -1,0 +1,206 @@
+#pragma once
+/// \file kinematics.hpp
+/// Forward kinematics: body poses (and velocities) in the world frame, plus the per-DOF motion axes
+/// and world-axes body inertias the other algorithms reuse (Featherstone 2008, sec. 4.1 and 5.3).
+///
+/// The workspace remembers the (q, v) its kinematics were computed for. Calling an algorithm with
+/// the same q (and v) again skips the recomputation, so the usual step
+///   forward_kinematics(m, ws, q, v); apply_contact_forces(...); aba(m, ws, q, v, tau);
+/// pays for the kinematics once. The cache compares values, not addresses, so it is always safe.
+#include <cmath>
+
+#include "gaitsynth/dynamics/workspace.hpp"
+
+namespace gaitsynth {
+
+namespace detail {
+
+/// Rotation by angle t about the unit axis a (Rodrigues): c I + s [a]x + (1 - c) a a^T.
+/// Returns R * rot(a, t) without forming rot(a, t), given Ra = R * a.
+inline mat3 rotate_intrinsic(const mat3& R, const vec3& a, const vec3& Ra, double t) {
+  const double s = std::sin(t), c = std::cos(t);
+  mat3 out;
+  // R [a]x: column i is R (a x e_i).
+  out.col(0) = a.z() * R.col(1) - a.y() * R.col(2);
+  out.col(1) = a.x() * R.col(2) - a.z() * R.col(0);
+  out.col(2) = a.y() * R.col(0) - a.x() * R.col(1);
+  out = c * R + s * out + ((1.0 - c) * Ra) * a.transpose();
+  return out;
+}
+
+template <root_joint Root, class Q>
+void root_pose(const model<Root>& m, const Q& q, mat3& R0, vec3& p0) {
+  const vec3& off = m.bodies[0].joint_offset;
+  if constexpr (std::is_same_v<Root, planar_root>) {
+    const double s = std::sin(q[2]), c = std::cos(q[2]);
+    R0 << c, 0.0, s, 0.0, 1.0, 0.0, -s, 0.0, c;
+    p0 = off + vec3(q[0], 0.0, q[1]);
+  } else if constexpr (std::is_same_v<Root, floating_root>) {
+    // Unit quaternion (w, x, y, z); normalized here so slightly drifted inputs stay rotations.
+    R0 = quat(q[3], q[4], q[5], q[6]).normalized().toRotationMatrix();
+    p0 = off + vec3(q[0], q[1], q[2]);
+  } else {
+    R0.setIdentity();
+    p0 = off;
+  }
+}
+
+/// Poses, motion axes and world inertias for configuration q (no size checks).
+template <root_joint Root, class Q>
+void update_poses(const model<Root>& m, workspace<Root>& ws, const Q& q) {
+  auto& s = ws.scratch;
+  constexpr int nqr = Root::nq;
+  mat3 R0;
+  vec3 p0;
+  root_pose(m, q, R0, p0);
+  s.ref = p0;
+  if constexpr (std::is_same_v<Root, planar_root>) {
+    s.S0.setZero();
+    s.S0(3, 0) = 1.0;  // x slide
+    s.S0(5, 1) = 1.0;  // z slide
+    s.S0(1, 2) = 1.0;  // pitch hinge about +y through the root origin (= the reference point)
+  } else if constexpr (std::is_same_v<Root, floating_root>) {
+    // v_root = [v_world of the root origin; omega in the root body frame]:
+    // spatial velocity about the root origin = [R omega_b; v_world].
+    s.S0.setZero();
+    s.S0.template topRightCorner<3, 3>() = R0;
+    s.S0.template bottomLeftCorner<3, 3>() = mat3::Identity();
+  }
+  ws.body_rotation[0] = R0;
+  ws.body_position[0] = p0;
+  s.body_rel[0].setZero();
+  {
+    const body& b0 = m.bodies[0];
+    s.body_inertia[0] = {b0.mass, R0 * b0.com, R0 * b0.inertia * R0.transpose()};
+  }
+  const int nb = m.num_bodies();
+  for (int b = 1; b < nb; ++b) {
+    const body& bd = m.bodies[b];
+    const mat3& Rp = ws.body_rotation[bd.parent];
+    const vec3 rel = s.body_rel[bd.parent] + Rp * bd.joint_offset;
+    mat3 R = Rp;
+    for (int k = 0; k < bd.num_dofs; ++k) {
+      const int j = bd.first_dof + k;
+      const vec3& a = m.dofs[j].axis;
+      const vec3 w = R * a;  // world axis; invariant under its own rotation
+      R = rotate_intrinsic(R, a, w, q[nqr + j]);
+      vec6& Sj = s.S[j + 1];
+      Sj.template head<3>() = w;
+      Sj.template tail<3>() = rel.cross(w);
+    }
+    ws.body_rotation[b] = R;
+    s.body_rel[b] = rel;
+    ws.body_position[b] = p0 + rel;
+    s.body_inertia[b] = {bd.mass, rel + R * bd.com, R * bd.inertia * R.transpose()};
+  }
+}
+
+/// Velocities and velocity-product accelerations for v (poses must be current).
+template <root_joint Root, class Vv>
+void update_velocities(const model<Root>& m, workspace<Root>& ws, const Vv& v) {
+  auto& s = ws.scratch;
+  constexpr int nvr = Root::nv;
+  if constexpr (nvr > 0) {
+    s.V[0] = s.S0 * v.template head<nvr>();
+    // Sdot v of the root about the (instantaneously fixed) reference point: [0; -omega x v_ref].
+    s.C[0].template head<3>().setZero();
+    s.C[0].template tail<3>() = -s.V[0].template head<3>().cross(s.V[0].template tail<3>());
+  } else {
+    s.V[0].setZero();
+    s.C[0].setZero();
+  }
+  const int nn = s.nj + 1;
+  for (int n = 1; n < nn; ++n) {
+    const vec6 vj = s.S[n] * v[nvr + n - 1];
+    const vec6& vp = s.V[s.node_parent[n]];
+    s.V[n] = vp + vj;
+    s.C[n] = spatial::cross_motion(vp, vj);  // Featherstone eq. 7.35 (c = v x S qdot)
+  }
+  const int nb = m.num_bodies();
+  for (int b = 0; b < nb; ++b) {
+    const vec6& Vb = s.V[s.body_node[b]];
+    ws.body_angular_velocity[b] = Vb.template head<3>();
+    ws.body_linear_velocity[b] =
+        Vb.template tail<3>() + Vb.template head<3>().cross(s.body_rel[b]);
+  }
+}
+
+template <root_joint Root, class Q>
+void check_q(const model<Root>& m, const Q& q) {
+  check_size(q.size(), m.nq(), "q (generalized positions)");
+}
+template <root_joint Root, class Vv>
+void check_v(const model<Root>& m, const Vv& v, const char* what) {
+  check_size(v.size(), m.nv(), what);
+}
+
+/// Makes poses current for q (recomputing only when q or the model differ from the cached ones).
+template <root_joint Root>
+void ensure_poses(const model<Root>& m, workspace<Root>& ws,
+                  const Eigen::Ref<const Eigen::VectorXd>& q) {
+  auto& s = ws.scratch;
+  if (s.level >= 1 && s.model_id == &m && q == s.q_cache) return;
+  update_poses(m, ws, q);
+  s.q_cache = q;
+  s.model_id = &m;
+  s.level = 1;
+}
+
+/// Makes poses and velocities current for (q, v).
+template <root_joint Root>
+void ensure_kinematics(const model<Root>& m, workspace<Root>& ws,
+                       const Eigen::Ref<const Eigen::VectorXd>& q,
+                       const Eigen::Ref<const Eigen::VectorXd>& v) {
+  auto& s = ws.scratch;
+  if (s.level >= 1 && s.model_id == &m && q == s.q_cache) {
+    if (s.level >= 2 && v == s.v_cache) return;
+  } else {
+    update_poses(m, ws, q);
+    s.q_cache = q;
+    s.model_id = &m;
+  }
+  update_velocities(m, ws, v);
+  s.v_cache = v;
+  s.level = 2;
+}
+
+}  // namespace detail
+
+/// Body poses (ws.body_rotation, ws.body_position) for configuration q (size nq).
+/// \throws std::invalid_argument if q or the workspace has the wrong size.
+template <root_joint Root>
+void forward_kinematics(const model<Root>& m, workspace<Root>& ws,
+                        const Eigen::Ref<const Eigen::VectorXd>& q) {
+  detail::check_workspace(m, ws);
+  detail::check_q(m, q);
+  detail::ensure_poses(m, ws, q);
+}
+
+/// Body poses and velocities (also ws.body_angular_velocity, ws.body_linear_velocity) for (q, v).
+/// \throws std::invalid_argument if q, v or the workspace has the wrong size.
+template <root_joint Root>
+void forward_kinematics(const model<Root>& m, workspace<Root>& ws,
+                        const Eigen::Ref<const Eigen::VectorXd>& q,
+                        const Eigen::Ref<const Eigen::VectorXd>& v) {
+  detail::check_workspace(m, ws);
+  detail::check_q(m, q);
+  detail::check_v(m, v, "v (generalized velocities)");
+  detail::ensure_kinematics(m, ws, q, v);
+}
+
+/// World position of the point p_body (body frame) of `body` (after forward_kinematics).
+template <root_joint Root>
+vec3 point_position(const model<Root>& m, const workspace<Root>& ws, int body, const vec3& p_body) {
+  (void)m;
+  return ws.body_position[body] + ws.body_rotation[body] * p_body;
+}
+
+/// World velocity of the point p_body (body frame) of `body` (after forward_kinematics with v).
+template <root_joint Root>
+vec3 point_velocity(const model<Root>& m, const workspace<Root>& ws, int body, const vec3& p_body) {
+  (void)m;
+  return ws.body_linear_velocity[body] +
+         ws.body_angular_velocity[body].cross(ws.body_rotation[body] * p_body);
+}
+
+}  // namespace gaitsynth

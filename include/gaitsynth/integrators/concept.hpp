@@ -1,0 +1,49 @@
+#pragma once
+/// \file concept.hpp
+/// The integrator policy. Following Boost.Odeint's second-order-system concept
+/// (doc/concepts/second_order_system.qbk: `sys(x, v, a, t)`), a *system* computes generalized
+/// accelerations from positions, velocities and time:
+///
+///   sys(const Eigen::VectorXd& q, const Eigen::VectorXd& v, double t, Eigen::VectorXd& ddq_out)
+///
+/// (ddq_out has size nv on entry and must be overwritten). An *integrator* advances a sim_state
+/// (q, v, t) of a model<Root> by one step dt:
+///
+///   integrator.step(model, state, dt, sys)     // throws std::invalid_argument for a bad dt
+///
+/// Integrators own their scratch vectors; `prepare(model)` sizes them so that no step allocates.
+/// The quaternion of a floating root is kept unit length by every integrator.
+#include <Eigen/Core>
+#include <concepts>
+
+#include "gaitsynth/model/model.hpp"
+#include "gaitsynth/model/state.hpp"
+
+namespace gaitsynth {
+
+/// A callable usable as the second-order system of an integrator.
+template <class Sys>
+concept second_order_system =
+    requires(Sys& sys, const Eigen::VectorXd& q, const Eigen::VectorXd& v, double t,
+             Eigen::VectorXd& ddq) { sys(q, v, t, ddq); };
+
+namespace detail {
+/// The minimal system, used to check the integrator concept.
+struct system_archetype {
+  void operator()(const Eigen::VectorXd&, const Eigen::VectorXd&, double,
+                  Eigen::VectorXd& ddq) const {
+    ddq.setZero();
+  }
+};
+}  // namespace detail
+
+/// An integrator for models with root joint Root.
+template <class I, class Root>
+concept integrator = root_joint<Root> && requires(I& integ, const model<Root>& m, sim_state& s,
+                                                  double dt, detail::system_archetype sys) {
+  integ.step(m, s, dt, sys);
+  integ.prepare(m);
+  { I::order } -> std::convertible_to<int>;
+};
+
+}  // namespace gaitsynth
