@@ -6,6 +6,7 @@
 
 #include "gaitsynth/actuators/pd.hpp"
 #include "gaitsynth/controllers/nearest_neighbor.hpp"
+#include "gaitsynth/controllers/nearest_neighbor_json.hpp"
 #include "support/sharon2005.hpp"
 
 using namespace gaitsynth;
@@ -231,4 +232,34 @@ TEST_CASE("nearest neighbor: bad options are named", "[sharon2005][nn]") {
   o = {};
   o.max_advance = 12;
   CHECK_THROWS_WITH(NN(m, w, o), Catch::Contains("max_advance must be < num_nodes"));
+}
+
+TEST_CASE("nearest neighbor: JSON round trip is exact", "[sharon2005][nn][json]") {
+  const auto m = small_biped();
+  nearest_neighbor_options o;
+  o.max_advance = 2;
+  o.kp = {100, 200, 300, 400};
+  NN c(m, small_walk(m), o);
+  std::vector<double> p = c.parameters();
+  for (std::size_t i = 0; i < p.size(); ++i) p[i] += std::sin(1.0 + static_cast<double>(i)) / 3;
+  c.bind(p);
+  const std::string text = nearest_neighbor_to_json(m, c, {{"evaluations", 12}}).dump(1);
+  const NN back = nearest_neighbor_from_json(m, nlohmann::json::parse(text), "c.json");
+  CHECK(back.parameters() == p);
+  CHECK(back.opts().max_advance == 2);
+  CHECK(back.kp()[3] == 400);
+  for (int i = 0; i < 12; ++i) {
+    CHECK(back.node(i).location == c.node(i).location);
+    CHECK(back.node(i).output == c.node(i).output);
+    CHECK(back.node(i).torso_pitch == c.node(i).torso_pitch);
+    CHECK(back.node(i).stance == c.node(i).stance);
+  }
+  auto j = nlohmann::json::parse(text);
+  j["nodes"][1]["output"]["lhipp"] = 0.1;
+  CHECK_THROWS_WITH(nearest_neighbor_from_json(m, j, "c.json"),
+                    Catch::Contains("c.json: nodes[1].output.lhipp: unknown DOF name 'lhipp'"));
+  j = nlohmann::json::parse(text);
+  j["nodes"][2]["location"].erase("rknee");
+  CHECK_THROWS_WITH(nearest_neighbor_from_json(m, j, "c.json"),
+                    Catch::Contains("c.json: nodes[2].location.rknee: missing"));
 }
