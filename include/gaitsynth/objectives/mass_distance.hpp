@@ -64,9 +64,9 @@ std::vector<mass_point> link_end_points(const model<Root>& m) {
 
 /// delta of eq. 2 between two sets of body poses (e.g. two workspaces after forward_kinematics):
 /// sum_p m_p |R_b p + o_b - (R'_b p + o'_b)|^2, kg m^2.
-inline double mass_distance_error(std::span<const mass_point> points,
-                                  std::span<const mat3> R, std::span<const vec3> o,
-                                  std::span<const mat3> R_target, std::span<const vec3> o_target) {
+inline double mass_distance_error(std::span<const mass_point> points, std::span<const mat3> R,
+                                  std::span<const vec3> o, std::span<const mat3> R_target,
+                                  std::span<const vec3> o_target) {
   double d = 0.0;
   for (const mass_point& p : points) {
     const vec3 x = o[p.body] + R[p.body] * p.position;
@@ -91,12 +91,12 @@ class mass_distance {
   using options = mass_distance_options;
 
   struct accumulator_type {
-    workspace<Root> target_ws;    ///< forward kinematics of the target pose
-    Eigen::VectorXd target_q;     ///< nq
-    double integral = 0.0;        ///< sum delta dt so far, kg m^2 s
-    double delta = 0.0;           ///< last delta, kg m^2
-    double delta_max = 0.0;       ///< largest delta seen, kg m^2
-    double time = 0.0;            ///< integrated time, s
+    workspace<Root> target_ws;  ///< forward kinematics of the target pose
+    Eigen::VectorXd target_q;   ///< nq
+    double integral = 0.0;      ///< sum delta dt so far, kg m^2 s
+    double delta = 0.0;         ///< last delta, kg m^2
+    double delta_max = 0.0;     ///< largest delta seen, kg m^2
+    double time = 0.0;          ///< integrated time, s
   };
 
   /// `target` is copied; `m` must be the model the rollout simulates (same bodies and DOFs).
@@ -146,7 +146,7 @@ class mass_distance {
 
   /// delta(t) at the start of the step's interval, integrated with the rectangle rule (eq. 3).
   template <class View>
-    requires std::derived_from<View, step_view<Root>>
+  requires std::derived_from<View, step_view<Root>>
   void accumulate(accumulator_type& a, const View& v) const {
     target_.pose(v.t + opt_.time_offset, a.target_q);
     forward_kinematics(v.model(), a.target_ws, a.target_q);
@@ -167,7 +167,9 @@ class mass_distance {
   }
 
   /// Recorder hooks: delta(t) (kg m^2) and the running integral (kg m^2 s).
-  static std::array<std::string_view, 2> term_names() { return {"mass_distance", "mass_distance_integral"}; }
+  static std::array<std::string_view, 2> term_names() {
+    return {"mass_distance", "mass_distance_integral"};
+  }
   void terms(const accumulator_type& a, std::span<double> out) const {
     out[0] = a.delta;
     out[1] = a.integral;

@@ -1,0 +1,423 @@
+#pragma once
+/// \file rollout.hpp
+/// The fused rollout loop: simulate one character under one controller for one parameter vector
+/// and return the objective's cost. Every policy is a template parameter constrained by its concept
+/// (docs/architecture.md), so the step loop is one inlined function: no virtual call, no
+/// std::function, and no heap allocation after set-up (tests/rollout/no_allocation.standalone.cpp).
+///
+///   auto scratch = make_rollout_scratch(model);          // once per thread
+///   rollout_result r = rollout(model, pd_actuator::uniform(model, 300, 30), pose_hold(model),
+///                              distance_objective(), flat_terrain(), semi_implicit_euler(),
+///                              params, options, scratch);
+///
+/// Set-up (may allocate, may throw std::invalid_argument naming the bad value): validate dt and the
+/// options, controller.bind(params), create the policies' states, size the command, place the
+/// initial state, size the sensor history and the recorder.
+///
+/// Step k (t = t0 + k dt, computed, never accumulated, as Odeint's integrate_const does):
+///   1. forward kinematics of (q, v); COM and COM velocity;
+///   2. stop if fallen (COM below the fall height above the terrain) or k reached the horizon;
+///   3. clear external wrenches; penalty contact against the terrain; pushes (into ws.f_ext) — done
+///      before sensing so that controllers see this step's contact flags;
+///   4. sense (and push the sample into the delay history); once per controller period, the
+///      controller writes the command (held in between);
+///   5. the actuator maps the command to joint torques; passive joint-limit torques are added;
+///   6. the objective accumulates this step (its view: state at t, torques and contact forces held
+///      over [t, t + dt)); record a frame if due; stop if the objective is done;
+///   7. the integrator advances (q, v) with accelerations from ABA (torques and external wrenches
+///      held constant over the step: zero-order hold, also for the stages of RK4);
+///      the actuator's own state advances;
+///   8. stop if q or v is no longer finite (cost +infinity; rollout/result.hpp).
+#include <Eigen/Core>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <span>
+#include <type_traits>
+#include <utility>
+#include <vector>
+
+#include "gaitsynth/actuators/concept.hpp"
+#include "gaitsynth/contact/penalty_contact.hpp"
+#include "gaitsynth/contact/push.hpp"
+#include "gaitsynth/contact/terrain.hpp"
+#include "gaitsynth/controllers/concept.hpp"
+#include "gaitsynth/controllers/sensors.hpp"
+#include "gaitsynth/dynamics/aba.hpp"
+#include "gaitsynth/dynamics/center_of_mass.hpp"
+#include "gaitsynth/dynamics/configuration.hpp"
+#include "gaitsynth/dynamics/joint_limits.hpp"
+#include "gaitsynth/dynamics/kinematics.hpp"
+#include "gaitsynth/dynamics/workspace.hpp"
+#include "gaitsynth/error.hpp"
+#include "gaitsynth/integrators/concept.hpp"
+#include "gaitsynth/model/model.hpp"
+#include "gaitsynth/model/state.hpp"
+#include "gaitsynth/objectives/concept.hpp"
+#include "gaitsynth/rollout/options.hpp"
+#include "gaitsynth/rollout/recorder.hpp"
+#include "gaitsynth/rollout/result.hpp"
+#include "gaitsynth/rollout/termination.hpp"
+
+namespace gaitsynth {
+
+/// Per-thread memory of rollout(): the dynamics workspace, the simulated state and every buffer
+/// the step loop writes. Made once (make_rollout_scratch) and reused by every rollout of a thread;
+/// rollout() resizes it only if the model's sizes differ.
+template <root_joint Root>
+struct rollout_scratch {
+  workspace<Root> ws;
+  sim_state state;
+  Eigen::VectorXd tau;          ///< nv: actuator torques (root entries 0), N m
+  Eigen::VectorXd tau_passive;  ///< nv: passive joint-limit torques, N m
+  Eigen::VectorXd tau_total;    ///< nv: what ABA receives
+  Eigen::VectorXd command;      ///< actuator command (its size is the actuator's command_size)
+  contact_state contacts;       ///< penalty contact anchors, flags, forces, counts per body
+  sensor_history history;       ///< delayed sensor samples
+  int nq = -1, nv = -1, nb = -1, nc = -1;
+};
+
+/// Sizes a scratch for model m (allocates; set-up only).
+template <root_joint Root>
+void prepare_rollout_scratch(const model<Root>& m, rollout_scratch<Root>& s) {
+  if (s.nq == m.nq() && s.nv == m.nv() && s.nb == m.num_bodies() &&
+      s.nc == static_cast<int>(m.contact_points.size()))
+    return;
+  s.ws = make_workspace(m);
+  s.state = make_state(m);
+  s.tau = Eigen::VectorXd::Zero(m.nv());
+  s.tau_passive = Eigen::VectorXd::Zero(m.nv());
+  s.tau_total = Eigen::VectorXd::Zero(m.nv());
+  s.contacts = make_contact_state(m);
+  s.nq = m.nq();
+  s.nv = m.nv();
+  s.nb = m.num_bodies();
+  s.nc = static_cast<int>(m.contact_points.size());
+}
+
+template <root_joint Root>
+rollout_scratch<Root> make_rollout_scratch(const model<Root>& m) {
+  rollout_scratch<Root> s;
+  prepare_rollout_scratch(m, s);
+  return s;
+}
+
+/// Lifts (or lowers) the root of configuration q so that the lowest contact point of m (or body
+/// origin, if m has no contact points) touches terrain `ground`. Set-up helper (allocates).
+template <root_joint Root, terrain T>
+void place_on_terrain(const model<Root>& m, const T& ground, Eigen::VectorXd& q) {
+  static_assert(Root::nq > 0, "place_on_terrain needs a root that can move vertically");
+  auto ws = make_workspace(m);
+  forward_kinematics(m, ws, q);
+  double gap = std::numeric_limits<double>::infinity();
+  auto consider = [&](const vec3& p) { gap = std::min(gap, p.z() - ground.height(p.x(), p.y())); };
+  if (m.contact_points.empty()) {
+    for (int b = 0; b < m.num_bodies(); ++b) consider(ws.body_position[b]);
+  } else {
+    for (const auto& c : m.contact_points) consider(point_position(m, ws, c.body, c.position));
+  }
+  constexpr int z_index = std::is_same_v<Root, planar_root> ? 1 : 2;
+  q[z_index] -= gap;
+}
+
+namespace detail {
+
+/// Physics step at which controller call n happens: the first step at or after t0 + n period.
+inline std::int64_t command_step(std::int64_t n, double period, double dt) {
+  if (period <= 0.0) return n;
+  return static_cast<std::int64_t>(std::ceil(static_cast<double>(n) * period / dt - 1e-9));
+}
+
+template <class C>
+double sensor_delay_of(const C& c) {
+  if constexpr (controller_with_sensor_delay<C>)
+    return static_cast<double>(c.max_sensor_delay());
+  else
+    return 0.0;
+}
+
+inline std::int64_t horizon_steps(double duration, double dt) {
+  return static_cast<std::int64_t>(std::ceil(duration / dt - 1e-9));
+}
+
+}  // namespace detail
+
+/// Runs one rollout. See the file comment for the step order and result.hpp for the cost
+/// convention. \throws std::invalid_argument for a bad timestep, duration, option, initial state,
+/// or parameter vector (wrong size, NaN), naming the value. A diverging or falling rollout is a
+/// result, not an exception.
+template <root_joint Root, class Actuator, class Controller, class Objective, terrain Terrain,
+          class Integrator>
+requires actuator<Actuator, Root> &&
+    controller<std::remove_cvref_t<Controller>, Root,
+               sensors_with<Root, typename Actuator::state_type>> &&
+    objective<Objective, Root, step_view_with<Root, typename Actuator::state_type>> &&
+    integrator<std::remove_cvref_t<Integrator>, Root>
+        rollout_result rollout(const model<Root>& m, const Actuator& act, Controller&& ctrl,
+                               const Objective& obj, const Terrain& ground, Integrator&& integ,
+                               std::span<const double> params, const rollout_options& opt,
+                               rollout_scratch<Root>& scr) {
+  using C = std::remove_cvref_t<Controller>;
+  using actuator_state = typename Actuator::state_type;
+
+  // ---------------------------------------------------------------- set-up (may allocate/throw)
+  check_positive(opt.dt, "rollout_options::dt (physics timestep, s)");
+  check_argument(std::isfinite(opt.duration) && opt.duration >= 0.0,
+                 "rollout_options::duration must be finite and >= 0 s, got ", opt.duration);
+  check_argument(!opt.detect_falls || (std::isfinite(opt.fall_height) &&
+                                       std::isfinite(opt.fall_fraction) && opt.fall_fraction >= 0),
+                 "rollout_options: fall_height and fall_fraction must be finite (fraction >= 0), "
+                 "got ",
+                 opt.fall_height, " and ", opt.fall_fraction);
+  const double dt = opt.dt;
+  ctrl.bind(params);
+  const double period = static_cast<double>(ctrl.period());
+  check_argument(std::isfinite(period) && period >= 0.0,
+                 "controller period must be finite and >= 0 s, got ", period);
+  if constexpr (controller_with_output_kind<C>)
+    check_argument(ctrl.output_kind() == act.input_kind(), "controller output kind ",
+                   static_cast<int>(ctrl.output_kind()),
+                   " does not match the actuator's input kind ", static_cast<int>(act.input_kind()),
+                   " (0 joint_torque, 1 joint_target, 2 excitation)");
+
+  prepare_rollout_scratch(m, scr);
+  workspace<Root>& ws = scr.ws;
+  sim_state& s = scr.state;
+  if (opt.initial_state.q.size() == 0) {
+    s.q = neutral_configuration(m);
+    if constexpr (Root::nq > 0) place_on_terrain(m, ground, s.q);
+    s.v.setZero();
+    s.t = 0.0;
+  } else {
+    check_size(opt.initial_state.q.size(), m.nq(), "rollout_options::initial_state.q");
+    check_size(opt.initial_state.v.size(), m.nv(), "rollout_options::initial_state.v");
+    check_finite(opt.initial_state.q, "rollout_options::initial_state.q");
+    check_finite(opt.initial_state.v, "rollout_options::initial_state.v");
+    check_argument(std::isfinite(opt.initial_state.t),
+                   "rollout_options::initial_state.t is not "
+                   "finite (",
+                   opt.initial_state.t, ")");
+    s.q = opt.initial_state.q;
+    s.v = opt.initial_state.v;
+    s.t = opt.initial_state.t;
+  }
+  if constexpr (controller_with_initial_state<C, Root>) ctrl.initial_state(m, s);
+  normalize_configuration(m, s.q);
+  const double t0 = s.t;
+
+  actuator_state act_state = act.make_state(m);
+  // d(actuator state)/dt, sized at set-up (a copy), only for actuators with a derivative hook.
+  [[maybe_unused]] auto act_rate = [&] {
+    if constexpr (actuator_with_derivative<Actuator, Root>)
+      return act_state;
+    else
+      return 0;
+  }();
+  typename C::state_type ctrl_state = ctrl.make_state(m);
+  typename Objective::accumulator_type acc = obj.make_accumulator(m);
+  const int ncmd = static_cast<int>(act.command_size(m));
+  check_argument(ncmd >= 0, "actuator command_size must be >= 0, got ", ncmd);
+  if (scr.command.size() != ncmd) scr.command.resize(ncmd);
+  scr.command.setZero();
+  scr.tau.setZero();
+  scr.tau_passive.setZero();
+  scr.tau_total.setZero();
+  validate(opt.contact);
+  scr.contacts.reset();
+  integ.prepare(m);
+  validate_pushes(m, std::span<const push>(opt.pushes));
+
+  const int nj = m.num_joint_dofs();
+  const std::int64_t n_steps = detail::horizon_steps(opt.duration, dt);
+  const double delay = detail::sensor_delay_of(ctrl);
+  check_argument(std::isfinite(delay) && delay >= 0.0,
+                 "controller max_sensor_delay must be finite and >= 0 s, got ", delay);
+  scr.history.reset(m.nq(), m.nv(), m.num_bodies(), history_capacity(delay, dt));
+
+  trajectory_recorder rec;
+  {
+    std::vector<std::string> names;
+    if constexpr (objective_with_terms<Objective>)
+      for (const auto& n : obj.term_names()) names.emplace_back(n);
+    const std::int64_t frames = opt.record ? n_steps / std::max(opt.record_every, 1) + 1 : 0;
+    rec.start(opt.record, m, opt.record_every, frames, names, opt.pushes.size());
+  }
+
+  forward_kinematics(m, ws, s.q, s.v);
+  rollout_result res;
+  res.com_initial = center_of_mass(m, ws);
+  {
+    const double h0 = res.com_initial.z() - ground.height(res.com_initial.x(), res.com_initial.y());
+    res.fall_height = opt.fall_height > 0.0 ? opt.fall_height : opt.fall_fraction * h0;
+  }
+  if (scr.history.capacity() > 0)  // as if the character had been still before t0
+    for (int i = 0; i < scr.history.capacity(); ++i)
+      scr.history.push(s.q, s.v, std::span<const int>(scr.contacts.points_touching));
+
+  sensors_with<Root, actuator_state> sen;
+  sen.model_ptr = &m;
+  sen.dt = dt;
+  sen.q_ptr = &s.q;
+  sen.v_ptr = &s.v;
+  sen.body_rotation = ws.body_rotation;
+  sen.body_position = ws.body_position;
+  sen.body_angular_velocity = ws.body_angular_velocity;
+  sen.body_linear_velocity = ws.body_linear_velocity;
+  sen.contact_count = scr.contacts.points_touching;
+  sen.contact_active = scr.contacts.active;
+  sen.history = scr.history.capacity() > 0 ? &scr.history : nullptr;
+  sen.actuator_state_ptr = &act_state;
+
+  step_view_with<Root, actuator_state> view;
+  view.model_ptr = &m;
+  view.dt = dt;
+  view.q_ptr = &s.q;
+  view.v_ptr = &s.v;
+  view.tau_ptr = &scr.tau;
+  view.tau_passive_ptr = &scr.tau_passive;
+  view.body_rotation = ws.body_rotation;
+  view.body_position = ws.body_position;
+  view.body_angular_velocity = ws.body_angular_velocity;
+  view.body_linear_velocity = ws.body_linear_velocity;
+  view.external_wrench = ws.f_ext;
+  view.contact_count = scr.contacts.points_touching;
+  view.contact_active = scr.contacts.active;
+  view.contact_force = scr.contacts.force;
+  view.actuator_state_ptr = &act_state;
+
+  // The system the integrator steps: ABA with the held torques and external wrenches.
+  auto sys = [&](const Eigen::VectorXd& q, const Eigen::VectorXd& v, double, Eigen::VectorXd& ddq) {
+    ddq = aba(m, ws, q, v, scr.tau_total);
+  };
+
+  // ---------------------------------------------------------------- the step loop (no allocation)
+  std::int64_t k = 0, calls = 0, next_call = 0;
+  stop_reason reason = stop_reason::horizon;
+  vec3 com = res.com_initial, com_v = vec3::Zero();
+  for (;; ++k) {
+    const double t = t0 + static_cast<double>(k) * dt;
+    s.t = t;
+    // 1. kinematics (cached by the workspace when already current)
+    forward_kinematics(m, ws, s.q, s.v);
+    com = center_of_mass(m, ws);
+    com_v = com_velocity(m, ws);
+    res.com_final = com;
+    // 2. stop conditions on the current state
+    if (opt.detect_falls &&
+        has_fallen(com.z() - ground.height(com.x(), com.y()), res.fall_height)) {
+      reason = stop_reason::fell;
+      break;
+    }
+    if (k >= n_steps) break;
+    // 3. contact and pushes
+    clear_external_wrenches(ws);
+    apply_contact_forces(m, ws, ground, opt.contact, scr.contacts, dt);
+    if (!opt.pushes.empty()) apply_pushes(m, ws, std::span<const push>(opt.pushes), t);
+    // 4. sense and command
+    scr.history.push(s.q, s.v, std::span<const int>(scr.contacts.points_touching));
+    if (k >= next_call) {
+      sen.t = t;
+      sen.step = static_cast<int>(k);
+      sen.com = com;
+      sen.com_velocity = com_v;
+      ctrl.command(static_cast<const sensors_with<Root, actuator_state>&>(sen), ctrl_state,
+                   Eigen::Ref<Eigen::VectorXd>(scr.command));
+      ++calls;
+      next_call = detail::command_step(calls, period, dt);
+    }
+    // 5. actuator and passive torques
+    act.torques(m, s, Eigen::Ref<const Eigen::VectorXd>(scr.command), act_state,
+                Eigen::Ref<Eigen::VectorXd>(scr.tau.tail(nj)));
+    scr.tau_passive.setZero();
+    joint_limit_torques(m, s.q, s.v, scr.tau_passive);
+    scr.tau_total = scr.tau + scr.tau_passive;
+    // 6. objective and recorder
+    view.t = t;
+    view.step = k;
+    view.com = com;
+    view.com_velocity = com_v;
+    view.toe_top_contact = scr.contacts.any_toe_top_touching;
+    obj.accumulate(acc, static_cast<const step_view_with<Root, actuator_state>&>(view));
+    if (rec.due(k)) {
+      trajectory_frame& f = rec.next();
+      f.t = t;
+      f.q = s.q;
+      f.v = s.v;
+      f.tau = scr.tau;
+      for (int b = 0; b < m.num_bodies(); ++b) {
+        f.body_position[b] = ws.body_position[b];
+        f.body_orientation[b] = Eigen::Quaterniond(ws.body_rotation[b]);
+      }
+      f.com = com;
+      for (std::size_t c = 0; c < m.contact_points.size(); ++c) {
+        const auto& cp = m.contact_points[c];
+        f.contact_position[c] = point_position(m, ws, cp.body, cp.position);
+        f.contact_force[c] = scr.contacts.force[c];
+        f.contact_active[c] = scr.contacts.active[c];
+      }
+      f.pushes.clear();
+      for (const push& p : opt.pushes)
+        if (p.active(t)) f.pushes.emplace_back(p.body, p.force);
+      if constexpr (objective_with_terms<Objective>)
+        obj.terms(acc, std::span<double>(f.objective_terms));
+      if constexpr (controller_with_discrete_state<C>)
+        f.controller_state = ctrl.discrete_state(ctrl_state);
+    }
+    if constexpr (objective_with_done<Objective>) {
+      if (obj.done(acc)) {
+        reason = stop_reason::objective;
+        break;
+      }
+    }
+    // 7. integrate
+    integ.step(m, s, dt, sys);
+    if constexpr (actuator_with_advance<Actuator, Root>) {
+      act.advance(m, s, Eigen::Ref<const Eigen::VectorXd>(scr.command), act_state, dt);
+    } else if constexpr (actuator_with_derivative<Actuator, Root>) {
+      act.derivative(m, s, Eigen::Ref<const Eigen::VectorXd>(scr.command), act_state, act_rate);
+      act_state += dt * act_rate;
+    }
+    // 8. divergence
+    if (!s.q.allFinite() || !s.v.allFinite()) {
+      reason = stop_reason::non_finite;
+      ++k;
+      break;
+    }
+  }
+
+  // ---------------------------------------------------------------- result
+  res.reason = reason;
+  res.steps = k;
+  res.time = static_cast<double>(k) * dt;
+  s.t = t0 + res.time;
+  res.controller_calls = calls;
+  rec.finish(ground);
+  if (reason == stop_reason::non_finite) {
+    res.cost = failed_rollout_cost;
+    return res;
+  }
+  rollout_outcome out;
+  out.reason = reason;
+  out.time = res.time;
+  out.duration = static_cast<double>(n_steps) * dt;
+  out.steps = k;
+  out.com_initial = res.com_initial;
+  out.com_final = res.com_final;
+  res.objective_value = static_cast<double>(obj.finish(std::as_const(acc), out));
+  res.cost = std::isnan(res.objective_value) ? failed_rollout_cost : res.objective_value;
+  return res;
+}
+
+/// Convenience overload for an Eigen parameter vector.
+template <root_joint Root, class Actuator, class Controller, class Objective, terrain Terrain,
+          class Integrator>
+rollout_result rollout(const model<Root>& m, const Actuator& act, Controller&& ctrl,
+                       const Objective& obj, const Terrain& ground, Integrator&& integ,
+                       const Eigen::VectorXd& params, const rollout_options& opt,
+                       rollout_scratch<Root>& scr) {
+  return rollout(
+      m, act, std::forward<Controller>(ctrl), obj, ground, std::forward<Integrator>(integ),
+      std::span<const double>(params.data(), static_cast<std::size_t>(params.size())), opt, scr);
+}
+
+}  // namespace gaitsynth
