@@ -2,6 +2,8 @@
 // seeded generators, vertical faces of steps, and bad input.
 #include <catch2/catch.hpp>
 
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <numbers>
@@ -271,6 +273,56 @@ TEST_CASE("steps_terrain: penetration through the nearest face", "[contact][terr
     CHECK(d.depth == Approx(0.002));
     CHECK(d.normal == -vec3::UnitX());
   }
+}
+
+TEST_CASE("steps_terrain: penetration is the distance to the stair profile",
+          "[contact][terrain][steps]") {
+  // Brute force: the surface of a profile along x is its treads and risers (segments in x-z).
+  const std::vector<steps_terrain::step> steps{{0.0, 0.15}, {0.3, 0.3}, {0.6, 0.1}, {0.65, 0.4}};
+  const steps_terrain t(steps, 0.0);
+  std::vector<std::array<double, 4>> seg;  // x0, z0, x1, z1
+  double prev_h = 0.0, prev_x = -100.0;
+  for (const auto& s : steps) {
+    seg.push_back({prev_x, prev_h, s.x_start, prev_h});               // tread
+    seg.push_back({s.x_start, std::min(prev_h, s.height), s.x_start,  // riser
+                   std::max(prev_h, s.height)});
+    prev_h = s.height;
+    prev_x = s.x_start;
+  }
+  seg.push_back({prev_x, prev_h, 100.0, prev_h});
+  const auto distance = [&](double x, double z) {
+    double best = 1e300;
+    for (const auto& g : seg) {
+      const Eigen::Vector2d a(g[0], g[1]), b(g[2], g[3]), p(x, z);
+      const double len2 = (b - a).squaredNorm();
+      const double u = len2 > 0 ? std::clamp((p - a).dot(b - a) / len2, 0.0, 1.0) : 0.0;
+      best = std::min(best, (p - (a + u * (b - a))).norm());
+    }
+    return best;
+  };
+  std::mt19937_64 rng(3);
+  std::uniform_real_distribution<double> ux(-0.2, 0.9), uz(-0.1, 0.45);
+  int inside = 0;
+  for (int k = 0; k < 2000; ++k) {
+    const double x = ux(rng), z = uz(rng);
+    const auto c = terrain_penetration(t, vec3(x, 0.0, z));
+    if (z >= t.height(x, 0.0)) {
+      CHECK(c.depth <= 0.0);
+      continue;
+    }
+    ++inside;
+    CHECK(c.depth == Approx(distance(x, z)).margin(1e-12));
+    CHECK(c.normal.norm() == Approx(1.0));
+    // Moving out along the normal by the depth lands on the surface (a profile point).
+    const vec3 q = vec3(x, 0.0, z) + c.depth * c.normal;
+    CHECK(distance(q.x(), q.z()) < 1e-12);
+  }
+  CHECK(inside > 500);
+  // At the foot of a riser: pushed back and up toward the concave corner.
+  const steps_terrain one({{1.0, 0.2}});
+  const auto c = terrain_penetration(one, vec3(1.001, 0.0, -0.0003));
+  CHECK(c.depth == Approx(std::hypot(0.001, 0.0003)));
+  CHECK(c.normal.isApprox(vec3(-0.001, 0.0, 0.0003).normalized()));
 }
 
 TEST_CASE("steps_terrain: boxes and random boxes", "[contact][terrain][steps]") {

@@ -10,11 +10,14 @@
 /// ground is at base_height. Treads are horizontal, so normal() is +z everywhere.
 ///
 /// Penetration (used by penalty contact) treats the risers as vertical walls: a point below the
-/// surface is pushed out through the nearest face, the tread above it (depth = height - z, normal
-/// +z) or a riser (the horizontal distance to the nearest cell boundary, along +-x or +-y, beyond
-/// which the ground is at or below the point; normal along that axis). So a toe that runs into a
-/// step is stopped by the riser instead of being lifted onto the tread by a huge spring force, as
-/// a height-only query would do (the depth would jump by the rise height).
+/// surface is pushed out along the shortest way to the surface, through the tread above it
+/// (depth = height - z, normal +z) or a riser (the vertical face at a cell boundary, found by
+/// walking along +-x and +-y; normal horizontal, or toward the riser's bottom edge when the point
+/// is below the far ground too, as at the foot of a step). Along one axis (stairs) this is the
+/// exact distance to the surface; on a grid of boxes diagonal neighbours are not searched. So a
+/// toe that runs into a step is stopped by the riser instead of being lifted onto the tread by a
+/// huge spring force, as a height-only query would do (the depth would jump by the rise height).
+/// A point on a tread within its penetration depth of an edge is pushed partly sideways.
 ///
 /// Constructors:
 ///   steps_terrain({{x0, h0}, {x1, h1}, ...}, base)   stairs/drops along x: height base for x < x0,
@@ -119,39 +122,40 @@ class steps_terrain {
     surface_contact c{cell_height(i, j) - z, vec3::UnitZ()};
     if (!(c.depth > 0.0)) return c;
     const int nx = num_x(), ny = num_y();
-    // Walk along each horizontal axis until the ground beyond a boundary is at or below z; stop
-    // as soon as the distance exceeds the best exit found so far.
+    // Walk along each horizontal axis over the cell boundaries; each riser between a near cell and
+    // a far cell is the vertical segment [lo, hi] of their heights at that boundary, and its point
+    // nearest to p is at height clamp(z, lo, hi) (the concave corner when the far ground is above
+    // z too). Stop once the lateral distance alone exceeds the best exit, or past a boundary whose
+    // far side is at or below z (everything further is farther).
+    const auto riser = [&](double d, double h_near, double h_far, const vec3& out) {
+      // d: lateral distance to the boundary; out: unit horizontal direction toward it.
+      const double zc = std::clamp(z, std::min(h_near, h_far), std::max(h_near, h_far));
+      const double dist = std::hypot(d, zc - z);
+      if (dist < c.depth) {
+        c.depth = dist;
+        c.normal = dist > 0.0 ? vec3((d * out + (zc - z) * vec3::UnitZ()) / dist) : out;
+      }
+      return h_far <= z;  // stop walking
+    };
     for (int k = i; k >= 0; --k) {  // -x: boundary xe_[k] between cells k-1 and k
       const double d = p.x() - xe_[k];
       if (!(d < c.depth)) break;
-      if (cell_height(k - 1, j) <= z) {
-        c = {d, -vec3::UnitX()};
-        break;
-      }
+      if (riser(d, cell_height(k, j), cell_height(k - 1, j), -vec3::UnitX())) break;
     }
     for (int k = i + 1; k <= nx; ++k) {  // +x
       const double d = xe_[k] - p.x();
       if (!(d < c.depth)) break;
-      if (cell_height(k, j) <= z) {
-        c = {d, vec3::UnitX()};
-        break;
-      }
+      if (riser(d, cell_height(k - 1, j), cell_height(k, j), vec3::UnitX())) break;
     }
     for (int k = j; k >= 0; --k) {  // -y
       const double d = p.y() - ye_[k];
       if (!(d < c.depth)) break;
-      if (cell_height(i, k - 1) <= z) {
-        c = {d, -vec3::UnitY()};
-        break;
-      }
+      if (riser(d, cell_height(i, k), cell_height(i, k - 1), -vec3::UnitY())) break;
     }
     for (int k = j + 1; k <= ny; ++k) {  // +y
       const double d = ye_[k] - p.y();
       if (!(d < c.depth)) break;
-      if (cell_height(i, k) <= z) {
-        c = {d, vec3::UnitY()};
-        break;
-      }
+      if (riser(d, cell_height(i, k - 1), cell_height(i, k), vec3::UnitY())) break;
     }
     return c;
   }

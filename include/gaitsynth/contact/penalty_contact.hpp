@@ -1,0 +1,252 @@
+#pragma once
+/// \file penalty_contact.hpp
+/// Penalty (spring-damper) ground contact at the model's contact points, with Coulomb friction
+/// through a tangential anchor spring (docs/contact.md has the equations and the reasons for the
+/// parameter values).
+///
+/// For every contact point P (body b, world position p, world velocity v), with depth d and unit
+/// outward normal n from terrain_penetration(terrain, p) and v_n = n.v (> 0: separating):
+///
+///   normal force      f_n = max(0, kp d - kd' v_n)                       (no pulling)
+///   first touch       anchor a := p                                      (d crosses 0)
+///   tangential force  f_t = -kt (p - a)_t - bt' v_t       (x_t: x minus its component along n)
+///   Coulomb cone      if |f_t| > mu f_n: f_t := mu f_n f_t / |f_t|, and the anchor moves to
+///                     a := p + f_t / kt, so the anchor spring alone sits on the cone (sliding)
+///   force on body b   f = f_n n + f_t, applied at p (add_point_force into ws.f_ext)
+///
+/// Defaults: kp = 75000 N/m, kd = 2000 N s/m (Wang et al. 2009, sec. 6, who used ODE at 2400 Hz),
+/// mu = 1 (configurable; Wang used 10, 0.8 and 0.3), kt = kp and bt = kd (see contact_parameters).
+///
+/// kd' and bt' are the damping coefficients after the implicit-damping correction (on by default):
+/// ODE solves its spring-damper contact implicitly, but here the force is explicit, and
+/// kd = 2000 N s/m per point on a light body (a 0.1-0.2 kg toe, whose effective mass at a corner is
+/// a few tens of grams) makes kd dt / m >> 2 at 2400 Hz: the damper reverses the velocity each step
+/// and the toe explodes. So each damper uses the force backward Euler would give for that point on
+/// its body alone, shared by the n_b touching points of the body:
+///
+///   kd' = kd / (1 + n_b kd dt / m_eff(n)),   bt' = bt / (1 + n_b bt dt / m_eff(t)),
+///   1 / m_eff(u) = 1 / m_b + (r x u)^T I_b^-1 (r x u),  r = p - com_b (world),
+///
+/// the effective mass of the free body at P along u. Joints only add inertia, so this is a lower
+/// bound of the true effective mass, which keeps every damper stable; on heavy bodies kd' ~ kd.
+/// The springs stay explicit (kp, kt with the lightest toe points keep dt * omega < 2 at 2400 Hz).
+///
+/// Contact counts (Wang et al. 2009's objective needs "3 or more points of contact" on the stance
+/// foot or toe and "the top of the swing toe in contact"): a point touches while d > 0.
+///
+/// No allocation: contact_state is sized once by make_contact_state(model).
+#include <Eigen/Core>
+#include <Eigen/LU>
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <vector>
+
+#include "gaitsynth/contact/terrain.hpp"
+#include "gaitsynth/dynamics/kinematics.hpp"
+#include "gaitsynth/dynamics/workspace.hpp"
+#include "gaitsynth/error.hpp"
+#include "gaitsynth/model/model.hpp"
+#include "gaitsynth/spatial/types.hpp"
+
+namespace gaitsynth {
+
+/// Contact model constants (SI units). One set for all points.
+struct contact_parameters {
+  double kp = 75000.0;  ///< normal stiffness per point, N/m (Wang et al. 2009)
+  double kd = 2000.0;   ///< normal damping per point, N s/m (Wang et al. 2009)
+  double mu = 1.0;      ///< Coulomb friction coefficient (>= 0)
+  /// Tangential anchor stiffness per point, N/m. Equal to kp so that the sticking deflection is at
+  /// most mu times the normal penetration (mu f_n / kt = mu d) -- about 1 mm for a standing
+  /// 70 kg character with mu = 1 -- and the tangential modes are no stiffer, hence no less stable,
+  /// than the normal ones at the papers' 2400 Hz.
+  double kt = 75000.0;
+  /// Tangential damping per point, N s/m. Equal to kd for the same reason: the anchor spring then
+  /// has the normal direction's damping ratio, and sticking feet do not ring.
+  double bt = 2000.0;
+  /// Use the implicit-Euler damping coefficients kd', bt' (file comment). Off: plain kd and bt.
+  bool implicit_damping = true;
+};
+
+/// Throws std::invalid_argument naming the first bad parameter.
+inline void validate(const contact_parameters& p) {
+  check_positive(p.kp, "contact_parameters.kp (N/m)");
+  check_argument(std::isfinite(p.kd) && p.kd >= 0.0,
+                 "contact_parameters.kd (N s/m) must be finite and >= 0, got ", p.kd);
+  check_argument(std::isfinite(p.mu) && p.mu >= 0.0,
+                 "contact_parameters.mu must be finite and >= 0, got ", p.mu);
+  check_positive(p.kt, "contact_parameters.kt (N/m)");
+  check_argument(std::isfinite(p.bt) && p.bt >= 0.0,
+                 "contact_parameters.bt (N s/m) must be finite and >= 0, got ", p.bt);
+}
+
+/// Per-rollout contact state: friction anchors (they persist between steps), and this step's
+/// forces and counts. Index k follows model.contact_points, b follows model.bodies.
+struct contact_state {
+  // ---- per contact point --------------------------------------------------------------------
+  std::vector<vec3> anchor;           ///< friction anchor, world, m (meaningful while active)
+  std::vector<std::uint8_t> active;   ///< 1 while the point is below the terrain (d > 0)
+  std::vector<std::uint8_t> sliding;  ///< 1 if friction was on the cone this step
+  std::vector<double> depth;          ///< penetration d, m (<= 0: not touching)
+  std::vector<vec3> normal;           ///< terrain normal n used this step (world)
+  std::vector<double> normal_force;   ///< f_n >= 0, N
+  std::vector<vec3> force;            ///< total contact force f = f_n n + f_t on the body, world, N
+  // ---- per body -----------------------------------------------------------------------------
+  std::vector<int> points_touching;            ///< number of its points with d > 0
+  std::vector<std::uint8_t> toe_top_touching;  ///< 1 if one of its toe_top points touches
+  // ---- totals -------------------------------------------------------------------------------
+  int total_points_touching = 0;
+  bool any_toe_top_touching = false;
+  // ---- cached from the model by make_contact_state ------------------------------------------
+  std::vector<double> inv_mass;   ///< per body, 1/kg
+  std::vector<mat3> inv_inertia;  ///< per body, about its COM, body axes, 1/(kg m^2)
+
+  int num_points() const { return static_cast<int>(anchor.size()); }
+  int num_bodies() const { return static_cast<int>(points_touching.size()); }
+
+  /// Forgets all anchors and forces (start of a new rollout).
+  void reset() {
+    std::fill(anchor.begin(), anchor.end(), vec3::Zero());
+    std::fill(active.begin(), active.end(), std::uint8_t{0});
+    std::fill(sliding.begin(), sliding.end(), std::uint8_t{0});
+    std::fill(depth.begin(), depth.end(), 0.0);
+    std::fill(normal.begin(), normal.end(), vec3::UnitZ());
+    std::fill(normal_force.begin(), normal_force.end(), 0.0);
+    std::fill(force.begin(), force.end(), vec3::Zero());
+    std::fill(points_touching.begin(), points_touching.end(), 0);
+    std::fill(toe_top_touching.begin(), toe_top_touching.end(), std::uint8_t{0});
+    total_points_touching = 0;
+    any_toe_top_touching = false;
+  }
+};
+
+/// A contact state sized for `m` (the only allocation contact needs).
+template <root_joint Root>
+contact_state make_contact_state(const model<Root>& m) {
+  contact_state s;
+  const auto np = m.contact_points.size();
+  const auto nb = static_cast<std::size_t>(m.num_bodies());
+  s.anchor.assign(np, vec3::Zero());
+  s.active.assign(np, 0);
+  s.sliding.assign(np, 0);
+  s.depth.assign(np, 0.0);
+  s.normal.assign(np, vec3::UnitZ());
+  s.normal_force.assign(np, 0.0);
+  s.force.assign(np, vec3::Zero());
+  s.points_touching.assign(nb, 0);
+  s.toe_top_touching.assign(nb, 0);
+  s.inv_mass.resize(nb);
+  s.inv_inertia.resize(nb);
+  for (std::size_t b = 0; b < nb; ++b) {
+    s.inv_mass[b] = 1.0 / m.bodies[b].mass;
+    s.inv_inertia[b] = m.bodies[b].inertia.inverse();  // positive definite (model_builder)
+  }
+  return s;
+}
+
+namespace detail {
+/// 1 / m_eff(u): inverse effective mass of body b at world lever r (from its COM) along unit u,
+/// as a free rigid body.
+inline double inverse_effective_mass(const contact_state& s, int b, const mat3& R, const vec3& r,
+                                     const vec3& u) {
+  const vec3 ru = R.transpose() * r.cross(u);  // body axes
+  return s.inv_mass[b] + ru.dot(s.inv_inertia[b] * ru);
+}
+
+/// c / (1 + n c dt / m_eff): the backward-Euler damping coefficient (penalty_contact.hpp).
+inline double implicit_damping(double c, int n, double dt, double inv_m_eff) {
+  return c / (1.0 + n * c * dt * inv_m_eff);
+}
+}  // namespace detail
+
+/// Computes the penalty contact force at every contact point of `m` against terrain `t`, adds them
+/// to ws.f_ext (accumulates: clear_external_wrenches first), updates anchors, forces and counts in
+/// `s`. Needs forward_kinematics(m, ws, q, v) for the current state.
+/// \param dt  the time step, s (finite, > 0; used by the implicit damping)
+/// \throws std::invalid_argument if `s` was not made for a model like `m` or dt is bad.
+template <root_joint Root, terrain T>
+void apply_contact_forces(const model<Root>& m, workspace<Root>& ws, const T& t,
+                          const contact_parameters& p, contact_state& s, double dt) {
+  const int np = static_cast<int>(m.contact_points.size());
+  check_argument(s.num_points() == np && s.num_bodies() == m.num_bodies(), "contact_state has ",
+                 s.num_points(), " points and ", s.num_bodies(), " bodies, but model '", m.name,
+                 "' has ", np, " and ", m.num_bodies(), " (use make_contact_state(model))");
+  check_positive(dt, "dt (time step, s)");
+
+  // Pass 1: depths, normals and counts (the implicit damping shares each body among its touching
+  // points, so counts come first).
+  std::fill(s.points_touching.begin(), s.points_touching.end(), 0);
+  std::fill(s.toe_top_touching.begin(), s.toe_top_touching.end(), std::uint8_t{0});
+  s.total_points_touching = 0;
+  s.any_toe_top_touching = false;
+  for (int k = 0; k < np; ++k) {
+    const contact_point& cp = m.contact_points[k];
+    const vec3 pw = point_position(m, ws, cp.body, cp.position);
+    const surface_contact c = terrain_penetration(t, pw);
+    s.depth[k] = c.depth;
+    s.normal[k] = c.normal;
+    if (c.depth > 0.0) {
+      ++s.points_touching[cp.body];
+      ++s.total_points_touching;
+      if (cp.role == contact_point::kind::toe_top) {
+        s.toe_top_touching[cp.body] = 1;
+        s.any_toe_top_touching = true;
+      }
+    }
+  }
+
+  // Pass 2: forces.
+  for (int k = 0; k < np; ++k) {
+    const contact_point& cp = m.contact_points[k];
+    const double d = s.depth[k];
+    if (!(d > 0.0)) {
+      s.active[k] = 0;
+      s.sliding[k] = 0;
+      s.normal_force[k] = 0.0;
+      s.force[k].setZero();
+      continue;
+    }
+    const int b = cp.body;
+    const mat3& R = ws.body_rotation[b];
+    const vec3 rb = R * cp.position;  // from the body origin
+    const vec3 pw = ws.body_position[b] + rb;
+    const vec3 vw = ws.body_linear_velocity[b] + ws.body_angular_velocity[b].cross(rb);
+    const vec3& n = s.normal[k];
+    const double vn = n.dot(vw);
+    const vec3 vt = vw - vn * n;
+    const int nb = s.points_touching[b];
+    const vec3 r = rb - R * m.bodies[b].com;  // from the body's COM
+
+    double kd = p.kd, bt = p.bt;
+    if (p.implicit_damping) {
+      kd = detail::implicit_damping(p.kd, nb, dt, detail::inverse_effective_mass(s, b, R, r, n));
+      const double vt_norm = vt.norm();
+      if (vt_norm > 0.0)
+        bt = detail::implicit_damping(p.bt, nb, dt,
+                                      detail::inverse_effective_mass(s, b, R, r, vt / vt_norm));
+    }
+    const double fn = std::max(0.0, p.kp * d - kd * vn);
+
+    if (!s.active[k]) s.anchor[k] = pw;  // first touch
+    s.active[k] = 1;
+    const vec3 disp = pw - s.anchor[k];
+    const vec3 disp_t = disp - n.dot(disp) * n;
+    vec3 ft = -p.kt * disp_t - bt * vt;
+    const double limit = p.mu * fn;
+    const double ft_norm = ft.norm();
+    s.sliding[k] = 0;
+    if (ft_norm > limit) {
+      // Sliding: kinetic friction mu f_n against the would-be sticking force; the anchor follows so
+      // that its spring alone is on the cone (and sticking resumes once the pull drops inside).
+      ft = ft_norm > 0.0 ? vec3(ft * (limit / ft_norm)) : vec3::Zero();
+      s.anchor[k] = pw + ft / p.kt;
+      s.sliding[k] = 1;
+    }
+    const vec3 f = fn * n + ft;
+    s.normal_force[k] = fn;
+    s.force[k] = f;
+    add_point_force(m, ws, b, pw, f);
+  }
+}
+
+}  // namespace gaitsynth
