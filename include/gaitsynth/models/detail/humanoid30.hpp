@@ -223,6 +223,12 @@ inline floating_model build_humanoid30(const humanoid30_spec& sp) {
                 .segment_end = {0, 0, -Lsh}});
     const Eigen::Vector3d foot_size(Lft - Ltoe, wf, ha);
     const Eigen::Vector3d foot_c(0.5 * (heel_x + mtp_x), 0, -0.5 * ha);
+    std::vector<shape> foot_shapes{box(foot_c, 0.5 * foot_size)};
+    const double rc = 0.4 * ha;  // heel and ball cylinder radius (cylinders style)
+    if (sp.feet == foot_contact_style::cylinders)
+      for (const double cx : {heel_x + rc, mtp_x - rc})
+        foot_shapes.push_back(
+            capsule({cx, 0.5 * wf - rc, -ha + rc}, {cx, -0.5 * wf + rc, -ha + rc}, rc));
     b.add_body({.name = S + "foot",
                 .parent = S + "shin",
                 .joint_offset = {0, 0, -Lsh},
@@ -230,7 +236,7 @@ inline floating_model build_humanoid30(const humanoid30_spec& sp) {
                 .com = foot_c,
                 .inertia = solid::box_inertia(m_foot, foot_size),
                 .dofs = make_dofs(ankle_rows, S, right, k_scale, tau_scale, gh),
-                .shapes = {box(foot_c, 0.5 * foot_size)},
+                .shapes = foot_shapes,
                 .length = Lft - Ltoe,
                 .segment_end = {mtp_x, 0, -ha}});
     const Eigen::Vector3d toe_size(Ltoe, wf, ht);
@@ -257,7 +263,6 @@ inline floating_model build_humanoid30(const humanoid30_spec& sp) {
       // Heel and ball cylinders (axis y, radius 0.4 ankle height) tangent to the sole plane; each
       // is sampled at three points of its lower arc (-45, 0, +45 deg from straight down) at both
       // ends so that the foot can roll on them.
-      const double rc = 0.4 * ha;
       const std::array<double, 3> angles{-45.0 * deg, 0.0, 45.0 * deg};
       const std::array<const char*, 3> tag{"back", "mid", "front"};
       for (const auto& [where, cx] : {std::pair{"heel", heel_x + rc}, std::pair{"ball", mtp_x - rc}})
