@@ -33,6 +33,7 @@
 #include <vector>
 
 #include "gaitsynth/controllers/keyframes.hpp"
+#include "gaitsynth/dynamics/center_of_mass.hpp"
 #include "gaitsynth/dynamics/kinematics.hpp"
 #include "gaitsynth/dynamics/workspace.hpp"
 #include "gaitsynth/error.hpp"
@@ -81,6 +82,11 @@ struct mass_distance_options {
   double time_offset = 0.0;
   /// Error rate charged for the time left after a fall (kg m^2); < 0: the default described above.
   double fall_rate = -1.0;
+  /// Compare shapes only: translate the target along x so that its centre of mass is above the
+  /// simulated one's at every instant. Off for the optimization (eq. 2 as published: the target's
+  /// progression is part of the style); on, it measures how well the *pose sequence* is followed
+  /// over long runs whose speed differs slightly from the target's (the style report).
+  bool align_horizontal = false;
 };
 
 /// The objective C of eq. 3 (cost in kg m^2 s). Copyable; each accumulator owns the workspace it
@@ -150,6 +156,10 @@ class mass_distance {
   void accumulate(accumulator_type& a, const View& v) const {
     target_.pose(v.t + opt_.time_offset, a.target_q);
     forward_kinematics(v.model(), a.target_ws, a.target_q);
+    if (opt_.align_horizontal) {
+      a.target_q[0] += v.com.x() - center_of_mass(v.model(), a.target_ws).x();
+      forward_kinematics(v.model(), a.target_ws, a.target_q);
+    }
     const double d = mass_distance_error(points_, v.body_rotation, v.body_position,
                                          a.target_ws.body_rotation, a.target_ws.body_position);
     a.delta = d;

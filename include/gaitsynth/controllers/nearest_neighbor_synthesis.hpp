@@ -1,0 +1,189 @@
+#pragma once
+/// \file nearest_neighbor_synthesis.hpp
+/// The controller synthesis of Sharon & van de Panne 2005 (sections IV-V) as one call: optimize the
+/// free parameters of a nearest-neighbor controller (controllers/nearest_neighbor.hpp) with SDS
+/// (optimizers/sds.hpp) over bootstrapped episodes of growing simulation horizon (section V.C,
+/// "typically we begin with T_sim = 0.2 s and finish with T_sim = 2 s"), each episode started
+/// from the previous one's result (optimizers/continuation.hpp). The cost is any objective; the
+/// paper's is the mass-distance metric (objectives/mass_distance.hpp, eqs. 2-3).
+///
+///   nn_problem prob{model, torque_actuator{}, controller0, mass_distance(model, target),
+///                   flat_terrain{}, semi_implicit_euler{}, rollout_options_with_initial_state};
+///   nn_synthesis_result r = synthesize_nearest_neighbor(prob, nn_synthesis_options{});
+///   auto c = prob.controller_with(r.x);           // the optimized controller
+///   rollout_result check = prob.evaluate(r.x, 70.0);  // the paper's 70 s test
+///
+/// Everything here is deterministic (SDS draws no random numbers and the evaluator writes each
+/// value into its own slot), so a synthesis gives the same controller on any thread count.
+#include <Eigen/Core>
+#include <chrono>
+#include <cmath>
+#include <cstdint>
+#include <iostream>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "gaitsynth/controllers/nearest_neighbor.hpp"
+#include "gaitsynth/error.hpp"
+#include "gaitsynth/optimizers/continuation.hpp"
+#include "gaitsynth/optimizers/evaluators.hpp"
+#include "gaitsynth/optimizers/parameter_space.hpp"
+#include "gaitsynth/optimizers/sds.hpp"
+#include "gaitsynth/rollout/rollout.hpp"
+
+namespace gaitsynth {
+
+/// Everything needed to evaluate one parameter vector of a nearest-neighbor controller: the
+/// character, actuator, the initial controller (its non-free node coordinates stay fixed), the
+/// objective, terrain, integrator and the rollout settings (initial state, dt, contact, falls).
+/// Copyable; evaluate() is const and thread-safe (each call has its own controller and scratch).
+template <root_joint Root, class Actuator, class Objective, terrain Terrain, class Integrator>
+struct nn_problem {
+  const model<Root>& character;
+  Actuator actuator;
+  nearest_neighbor_controller<Root> controller;
+  Objective objective;
+  Terrain ground;
+  Integrator integrator;
+  rollout_options options;  ///< its duration is replaced by the horizon of each evaluation
+
+  /// The controller with parameter vector x bound.
+  nearest_neighbor_controller<Root> controller_with(const Eigen::VectorXd& x) const {
+    auto c = controller;
+    c.bind(std::span<const double>(x.data(), static_cast<std::size_t>(x.size())));
+    return c;
+  }
+
+  /// One rollout of `horizon` seconds with parameters x (optionally recorded).
+  rollout_result evaluate(const Eigen::VectorXd& x, double horizon, trajectory* record = nullptr,
+                          int record_every = 1) const {
+    auto c = controller;
+    auto integ = integrator;
+    rollout_options o = options;
+    o.duration = horizon;
+    o.record = record;
+    o.record_every = record_every;
+    auto scratch = make_rollout_scratch(character);
+    return rollout(character, actuator, c, objective, ground, integ,
+                   std::span<const double>(x.data(), static_cast<std::size_t>(x.size())), o,
+                   scratch);
+  }
+
+  /// The initial parameter vector (the controller's current parameters).
+  Eigen::VectorXd initial_parameters() const {
+    const std::vector<double> p = controller.parameters();
+    return Eigen::Map<const Eigen::VectorXd>(p.data(), static_cast<Eigen::Index>(p.size()));
+  }
+};
+
+template <root_joint Root, class Actuator, class Objective, terrain Terrain, class Integrator>
+nn_problem(const model<Root>&, Actuator, nearest_neighbor_controller<Root>, Objective, Terrain,
+           Integrator, rollout_options)
+    -> nn_problem<Root, Actuator, Objective, Terrain, Integrator>;
+
+struct nn_synthesis_options {
+  /// Episode horizons T_sim (s), in order. Empty: 0.2, 0.4, ..., 2.0 (section V.C).
+  std::vector<double> horizons;
+  /// SDS per episode (angles in rad: parameters are node coordinates): initial step alpha,
+  /// shrink factor, minimum step, and an evaluation budget (0: until min_step).
+  double initial_step = 0.1;
+  double shrink = 0.5;
+  double min_step = 0.0125;
+  std::int64_t evaluations_per_episode = 400;
+  /// Each parameter may move at most this far (rad) from its initial value.
+  double parameter_range = 1.5;
+  /// Evaluation threads (the calling thread included).
+  unsigned threads = 2;
+  /// Progress line, CSV log, checkpoints (optimizers/minimize.hpp). The `stage` column of the log
+  /// is the episode index.
+  run_options run{};
+};
+
+struct nn_synthesis_result {
+  Eigen::VectorXd x;                ///< optimized parameters
+  double value = 0.0;               ///< cost of x on the last episode
+  continuation_result episodes;     ///< one optimization_result per episode
+  std::vector<double> horizons;     ///< T_sim of each episode, s
+  std::int64_t evaluations = 0;     ///< cost function evaluations over all episodes
+  double wall_seconds = 0.0;        ///< wall time of the whole synthesis
+};
+
+/// The default bootstrapping schedule: 0.2, 0.4, ..., 2.0 s.
+inline std::vector<double> default_episode_horizons() {
+  std::vector<double> h;
+  for (int k = 1; k <= 10; ++k) h.push_back(0.2 * k);
+  return h;
+}
+
+/// Runs the bootstrapped SDS synthesis of section V. Throws std::invalid_argument for bad options.
+template <class Problem>
+nn_synthesis_result synthesize_nearest_neighbor(const Problem& prob, nn_synthesis_options o = {}) {
+  if (o.horizons.empty()) o.horizons = default_episode_horizons();
+  for (std::size_t k = 0; k < o.horizons.size(); ++k)
+    check_argument(std::isfinite(o.horizons[k]) && o.horizons[k] > 0,
+                   "nn_synthesis_options: horizon ", k, " must be finite and > 0, got ",
+                   o.horizons[k]);
+  check_positive(o.parameter_range, "nn_synthesis_options::parameter_range (rad)");
+  check_argument(o.threads >= 1, "nn_synthesis_options::threads must be >= 1");
+  const Eigen::VectorXd x0 = prob.initial_parameters();
+  const std::vector<std::string> names = prob.controller.parameter_names();
+  parameter_space space;
+  for (Eigen::Index i = 0; i < x0.size(); ++i)
+    space.add({names[static_cast<std::size_t>(i)], x0[i] - o.parameter_range,
+               x0[i] + o.parameter_range, x0[i], 1.0});
+  thread_pool_evaluator pool(o.threads);
+  const auto t0 = std::chrono::steady_clock::now();
+  nn_synthesis_result res;
+  res.horizons = o.horizons;
+  res.episodes = continuation(
+      o.horizons.size(), x0,
+      [&](std::size_t k, const Eigen::VectorXd& start) {
+        if (o.run.progress)
+          *o.run.progress << "episode " << k + 1 << "/" << o.horizons.size()
+                          << ": T_sim = " << o.horizons[k] << " s\n";
+        sds_options so;
+        so.initial_step = o.initial_step;
+        so.shrink = o.shrink;
+        so.min_step = o.min_step;
+        so.x0 = start;
+        so.stop.max_evaluations = o.evaluations_per_episode;
+        return sds(space, so);
+      },
+      [&](std::size_t k) {
+        const double T = o.horizons[k];
+        return [&prob, T](const Eigen::VectorXd& x) { return prob.evaluate(x, T).cost; };
+      },
+      pool, o.run);
+  res.wall_seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  res.x = res.episodes.x;
+  res.value = res.episodes.value;
+  for (const auto& s : res.episodes.stages) res.evaluations += s.evaluations;
+  return res;
+}
+
+/// How a controller fares in a long test rollout (the paper's 70 s test).
+struct walk_check {
+  double seconds = 0.0;       ///< simulated time before the end or a fall, s
+  bool fell = false;          ///< stopped by a fall (or divergence)
+  double distance = 0.0;      ///< COM displacement along x, m
+  double average_speed = 0.0; ///< distance / seconds, m/s
+  double cost = 0.0;          ///< objective value of the whole rollout
+  rollout_result result;
+};
+
+template <class Problem>
+walk_check check_walk(const Problem& prob, const Eigen::VectorXd& x, double seconds = 70.0,
+                      trajectory* record = nullptr, int record_every = 40) {
+  walk_check w;
+  w.result = prob.evaluate(x, seconds, record, record_every);
+  w.seconds = w.result.time;
+  w.fell = w.result.failed();
+  w.distance = w.result.com_final.x() - w.result.com_initial.x();
+  w.average_speed = w.seconds > 0 ? w.distance / w.seconds : 0.0;
+  w.cost = w.result.cost;
+  return w;
+}
+
+}  // namespace gaitsynth
