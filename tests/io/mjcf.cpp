@@ -232,21 +232,34 @@ void check_structure(const model<Root>& m, const mjcf_options& opt) {
     INFO("body " << bd.name);
     CHECK(e.at("name") == bd.name);
     // Parent in the file is the model's parent; the offset and inertia read back exactly.
+    CHECK(vec3_of(e.at("pos")) == bd.joint_offset);
     if (bd.parent < 0) {
       CHECK(bodies[k].second == nullptr);
     } else {
       REQUIRE(bodies[k].second != nullptr);
       CHECK(bodies[k].second->at("name") == m.bodies[bd.parent].name);
-      CHECK(vec3_of(e.at("pos")) == bd.joint_offset);
     }
     const auto in = kids(e, "inertial");
     REQUIRE(in.size() == 1);
     CHECK(std::strtod(in[0]->at("mass").c_str(), nullptr) == bd.mass);
     CHECK(vec3_of(in[0]->at("pos")) == bd.com);
-    const auto fi = numbers(in[0]->at("fullinertia"));
-    REQUIRE(fi.size() == 6);
+    // Principal moments and axes reproduce the inertia tensor to rounding; diagonal stays exact.
     const Eigen::Matrix3d& I = bd.inertia;
-    CHECK(fi == std::vector<double>{I(0, 0), I(1, 1), I(2, 2), I(0, 1), I(0, 2), I(1, 2)});
+    const Eigen::Vector3d moments = vec3_of(in[0]->at("diaginertia"));
+    const bool diagonal = I(0, 1) == 0 && I(0, 2) == 0 && I(1, 2) == 0;
+    CHECK(in[0]->has("quat") == !diagonal);
+    if (diagonal) {
+      CHECK(moments == I.diagonal());
+    } else {
+      const auto qv = numbers(in[0]->at("quat"));
+      REQUIRE(qv.size() == 4);
+      const Eigen::Quaterniond iq(qv[0], qv[1], qv[2], qv[3]);
+      CHECK(std::abs(iq.norm() - 1.0) <= 1e-15);
+      const Eigen::Matrix3d R = iq.normalized().toRotationMatrix();
+      const Eigen::Matrix3d back = R * moments.asDiagonal() * R.transpose();
+      CHECK((back - I).cwiseAbs().maxCoeff() <= 1e-14 * I.cwiseAbs().maxCoeff());
+    }
+    CHECK(moments.minCoeff() > 0);
     // Hinges in DOF order, axes exact, ranges when limited.
     const auto js = kids(e, "joint");
     std::size_t k0 = 0;
@@ -263,7 +276,23 @@ void check_structure(const model<Root>& m, const mjcf_options& opt) {
         CHECK(vec3_of(js[2]->at("axis")) == Eigen::Vector3d::UnitY());
         k0 = 3;
       }
-      CHECK(kids(e, "freejoint").size() == (Root::nv == 6 ? 1u : 0u));
+      if constexpr (Root::nv == 6) {
+        if (bd.joint_offset.isZero(0.0)) {
+          CHECK(kids(e, "freejoint").size() == 1u);
+        } else {  // slides x, y, z + ball: the free joint would ignore the offset
+          CHECK(kids(e, "freejoint").empty());
+          REQUIRE(js.size() == 4 + static_cast<std::size_t>(bd.num_dofs));
+          for (int a = 0; a < 3; ++a) {
+            CHECK(js[a]->at("type") == "slide");
+            CHECK(vec3_of(js[a]->at("axis")) == Eigen::Vector3d::Unit(a));
+          }
+          CHECK(js[3]->at("name") == "root");
+          CHECK(js[3]->at("type") == "ball");
+          k0 = 4;
+        }
+      } else {
+        CHECK(kids(e, "freejoint").empty());
+      }
     } else {
       CHECK(kids(e, "freejoint").empty());
     }
@@ -288,8 +317,10 @@ void check_structure(const model<Root>& m, const mjcf_options& opt) {
     visual_shapes += opt.visual_geoms ? bd.shapes.size() : 0;
   }
   CHECK(all(world, "joint").size() == n_joints);  // not the <default> joint
-  CHECK(n_joints == static_cast<std::size_t>(m.num_joint_dofs() + (Root::nv == 3 ? 3 : 0)));
-  CHECK(all(doc, "freejoint").size() == (Root::nv == 6 ? 1u : 0u));
+  const bool free = Root::nv == 6 && m.bodies[0].joint_offset.isZero(0.0);
+  const int root_joints = Root::nv == 3 ? 3 : (Root::nv == 6 && !free ? 4 : 0);
+  CHECK(n_joints == static_cast<std::size_t>(m.num_joint_dofs() + root_joints));
+  CHECK(all(doc, "freejoint").size() == (free ? 1u : 0u));
   CHECK(dof_order_in_file == mjcf_dof_order(m));
 
   // Geoms: floor + shapes + contact spheres. Sites: one per contact point.
@@ -356,6 +387,10 @@ TEST_CASE("the MJCF of every test model is well-formed and mirrors the model", "
   const auto arm = mjcf_test::fixed_arm();
   const auto tree = mjcf_test::random_tree<floating_root>(rng, 12);
   const auto ptree = mjcf_test::random_tree<planar_root>(rng, 9);
+  auto offset_tree = mjcf_test::random_tree<floating_root>(rng, 6);
+  offset_tree.bodies[0].joint_offset = Eigen::Vector3d(0.1, -0.2, 0.9);
+  auto offset_planar = planar;
+  offset_planar.bodies[0].joint_offset = Eigen::Vector3d(0.0, 0.0, 1.1);
   for (const auto& oc : option_cases()) {
     INFO("options: " << oc.what);
     check_structure(planar, oc.opt);
@@ -363,7 +398,36 @@ TEST_CASE("the MJCF of every test model is well-formed and mirrors the model", "
     check_structure(arm, oc.opt);
     check_structure(tree, oc.opt);
     check_structure(ptree, oc.opt);
+    check_structure(offset_tree, oc.opt);
+    check_structure(offset_planar, oc.opt);
   }
+}
+
+TEST_CASE("principal axes reproduce an inertia tensor and respect the triangle inequality",
+          "[io][mjcf]") {
+  std::mt19937 rng(3);
+  std::normal_distribution<double> g;
+  for (int k = 0; k < 200; ++k) {
+    const Eigen::Matrix3d R =
+        Eigen::Quaterniond(g(rng), g(rng), g(rng), g(rng)).normalized().toRotationMatrix();
+    const Eigen::Matrix3d I =
+        mjcf_test::box_inertia(1.0 + k, Eigen::Vector3d(0.05, 0.1, 0.02 + 0.003 * k), R);
+    const auto p = mjcf_principal_axes(I);
+    CHECK_FALSE(p.identity);
+    CHECK(std::abs(p.rotation.norm() - 1.0) <= 1e-15);
+    CHECK(p.rotation.w() >= 0);
+    const Eigen::Matrix3d Rp = p.rotation.toRotationMatrix();
+    CHECK((Rp * p.moments.asDiagonal() * Rp.transpose() - I).cwiseAbs().maxCoeff() <=
+          1e-14 * I.cwiseAbs().maxCoeff());
+  }
+  // Diagonal: passed through bit-exact, no rotation.
+  const auto d = mjcf_principal_axes(Eigen::Vector3d(0.1, 0.2, 0.25).asDiagonal());
+  CHECK(d.identity);
+  CHECK(d.moments == Eigen::Vector3d(0.1, 0.2, 0.25));
+  // A thin rod violating A + B >= C by rounding only is clamped onto the inequality.
+  const auto rod = mjcf_principal_axes(Eigen::Vector3d(0.1, 1e-18, 0.1 + 1e-17).asDiagonal());
+  CHECK(rod.moments[2] <= rod.moments[0] + rod.moments[1]);
+  CHECK(rod.moments[2] == Approx(0.1).epsilon(1e-15));
 }
 
 TEST_CASE("the humanoid test model has the peer's 16 foot contacts", "[io][mjcf]") {

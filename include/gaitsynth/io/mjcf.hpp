@@ -9,12 +9,19 @@
 ///   qvel = [world linear velocity of the body origin, body-frame angular velocity]: the same
 ///   convention as floating_root); planar_root -> slide x "root_x", slide z "root_z", hinge y
 ///   "root_pitch" in the root body (q = [x, z, pitch]); fixed_root -> no joint (welded).
+///   The root body sits at its joint_offset (gaitsynth's root origin is joint_offset + q[0:3]).
+///   MuJoCo's free joint ignores the body position, so a floating root with a non-zero
+///   joint_offset is written as slides "root_x", "root_y", "root_z" and a ball joint "root",
+///   which has the same qpos/qvel layout and the same dynamics.
 /// * Each body sits at `joint_offset` in its parent with identity orientation (a body frame is
 ///   aligned with its parent's at q = 0) and carries its revolute DOFs as hinge joints at the body
 ///   origin, in DOF order, axes in the body frame. MuJoCo composes several hinges of one body
 ///   intrinsically in order, exactly as model.hpp does.
-/// * Mass properties are explicit: <inertial pos=com mass fullinertia> with
+/// * Mass properties are explicit: <inertial pos=com mass quat diaginertia> with
 ///   <compiler inertiafromgeom="false">, so geoms (visual shapes, contact spheres) add no mass.
+///   The principal axes are computed here in double precision (mjcf_principal_inertia): MuJoCo
+///   2.2.2 diagonalizes a `fullinertia` with an iterative solver that stops early, which changes
+///   the inertia by up to ~1e-7 relative (measured), far above rounding.
 /// * Joints have no armature, damping, stiffness or friction loss (stated in a <default>), so the
 ///   joint-space inertia and bias forces are those of pure rigid-body dynamics.
 /// * Joint position limits become hard limits (limited="true" range in radians, compiler
@@ -27,6 +34,8 @@
 /// are kept (body, joint and site names are gaitsynth's), so mj_name2id also works. Actuators (one
 /// motor per DOF, gear 1) are written in gaitsynth DOF order: ctrl[j] is the torque of DOF j.
 #include <Eigen/Core>
+#include <Eigen/Eigenvalues>
+#include <Eigen/Geometry>
 #include <charconv>
 #include <cmath>
 #include <fstream>
@@ -271,6 +280,39 @@ Eigen::VectorXd from_mjcf_qvel(const model<Root>& m, const Eigen::VectorXd& qvel
   return detail::mjcf::scatter(qvel, mjcf_qvel_index(m), "from_mjcf_qvel: qvel");
 }
 
+/// Principal moments and axes of an inertia tensor, as written to <inertial quat diaginertia>.
+struct mjcf_principal_inertia {
+  Eigen::Vector3d moments = Eigen::Vector3d::Zero();             ///< kg m^2
+  Eigen::Quaterniond rotation = Eigen::Quaterniond::Identity();  ///< principal axes in the body
+  bool identity = true;  ///< the tensor is diagonal: moments are its diagonal, no quat written
+};
+
+/// I = R(rotation) diag(moments) R(rotation)^T, to rounding (~1e-16 relative). A diagonal tensor is
+/// passed through exactly. Moments that break the triangle inequality by rounding only (the
+/// builder accepts 1e-9 of their sum, MuJoCo none) are clamped onto it.
+inline mjcf_principal_inertia mjcf_principal_axes(const Eigen::Matrix3d& I) {
+  mjcf_principal_inertia out;
+  const Eigen::Matrix3d sym = 0.5 * (I + I.transpose());
+  if (sym(0, 1) == 0.0 && sym(0, 2) == 0.0 && sym(1, 2) == 0.0) {
+    out.moments = sym.diagonal();
+  } else {
+    Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> es(sym);
+    check_argument(es.info() == Eigen::Success, "write_mjcf: inertia eigen-decomposition failed");
+    Eigen::Matrix3d V = es.eigenvectors();
+    if (V.determinant() < 0) V.col(2) = -V.col(2);  // a proper rotation
+    out.moments = es.eigenvalues();
+    out.rotation = Eigen::Quaterniond(V).normalized();
+    if (out.rotation.w() < 0) out.rotation.coeffs() = -out.rotation.coeffs();
+    out.identity = false;
+  }
+  Eigen::Vector3d& d = out.moments;
+  for (int k = 0; k < 3; ++k) {
+    const int i = (k + 1) % 3, j = (k + 2) % 3;
+    if (d[k] > d[i] + d[j]) d[k] = d[i] + d[j];
+  }
+  return out;
+}
+
 /// Writes `m` as an MJCF document to `os`. Throws std::invalid_argument for a name that XML cannot
 /// hold (control characters), names MuJoCo would see twice, non-finite numbers, bad options
 /// (non-positive timestep, radii or friction; a keyframe of the wrong size).
@@ -355,12 +397,23 @@ void write_mjcf(const model<Root>& m, std::ostream& os, const mjcf_options& opt 
     const std::string in = indent(d + 1);
     bodies.add(bd.name);
     x += indent(d) + "<body name=\"" + xml_name("body", bd.name) + "\" pos=\"" +
-         vec(bd.parent < 0 ? Eigen::Vector3d::Zero() : bd.joint_offset) + "\">\n";
+         vec(bd.joint_offset) + "\">\n";
     // Root joint(s).
     if (bd.parent < 0) {
       if constexpr (Root::nv == 6) {
-        joints.add("root");
-        x += in + "<freejoint name=\"root\"/>\n";
+        if (bd.joint_offset.isZero(0.0)) {
+          joints.add("root");
+          x += in + "<freejoint name=\"root\"/>\n";
+        } else {
+          // gaitsynth puts the root origin at joint_offset + q[0:3]; a MuJoCo free joint ignores
+          // the body position, so an offset root gets the equivalent slide x, y, z + ball chain
+          // (same qpos and qvel layout: world linear velocity, body-frame angular velocity).
+          for (const char* n : {"root_x", "root_y", "root_z", "root"}) joints.add(n);
+          x += in + "<joint name=\"root_x\" type=\"slide\" pos=\"0 0 0\" axis=\"1 0 0\"/>\n";
+          x += in + "<joint name=\"root_y\" type=\"slide\" pos=\"0 0 0\" axis=\"0 1 0\"/>\n";
+          x += in + "<joint name=\"root_z\" type=\"slide\" pos=\"0 0 0\" axis=\"0 0 1\"/>\n";
+          x += in + "<joint name=\"root\" type=\"ball\" pos=\"0 0 0\"/>\n";
+        }
       } else if constexpr (Root::nv == 3) {
         for (auto n : Root::dof_names) joints.add(std::string(n));
         x += in + "<joint name=\"root_x\" type=\"slide\" pos=\"0 0 0\" axis=\"1 0 0\"/>\n";
@@ -368,10 +421,12 @@ void write_mjcf(const model<Root>& m, std::ostream& os, const mjcf_options& opt 
         x += in + "<joint name=\"root_pitch\" type=\"hinge\" pos=\"0 0 0\" axis=\"0 1 0\"/>\n";
       }
     }
-    const Eigen::Matrix3d& I = bd.inertia;
-    x += in + "<inertial pos=\"" + vec(bd.com) + "\" mass=\"" + num(bd.mass) + "\" fullinertia=\"" +
-         num(I(0, 0)) + " " + num(I(1, 1)) + " " + num(I(2, 2)) + " " + num(I(0, 1)) + " " +
-         num(I(0, 2)) + " " + num(I(1, 2)) + "\"/>\n";
+    const mjcf_principal_inertia pi = mjcf_principal_axes(bd.inertia);
+    x += in + "<inertial pos=\"" + vec(bd.com) + "\" mass=\"" + num(bd.mass) + "\"";
+    if (!pi.identity)
+      x += " quat=\"" + num(pi.rotation.w()) + " " + num(pi.rotation.x()) + " " +
+           num(pi.rotation.y()) + " " + num(pi.rotation.z()) + "\"";
+    x += " diaginertia=\"" + vec(pi.moments) + "\"/>\n";
     for (int k = 0; k < bd.num_dofs; ++k) {
       const joint_dof& j = m.dofs[bd.first_dof + k];
       joints.add(j.name);
