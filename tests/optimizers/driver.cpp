@@ -1,0 +1,146 @@
+// The minimize driver (CSV log, progress line, callbacks) and continuation.
+#include <catch2/catch.hpp>
+
+#include <fstream>
+#include <sstream>
+
+#include "optimizers/helpers.hpp"
+
+using namespace gaitsynth;
+using namespace gaitsynth::testing;
+using Catch::Matchers::Contains;
+namespace tf = gaitsynth::test_functions;
+
+namespace {
+std::vector<std::vector<std::string>> read_csv(const std::filesystem::path& p) {
+  std::ifstream in(p);
+  std::vector<std::vector<std::string>> rows;
+  std::string line;
+  while (std::getline(in, line)) {
+    std::vector<std::string> cells;
+    std::stringstream ss(line);
+    std::string c;
+    while (std::getline(ss, c, ',')) cells.push_back(c);
+    rows.push_back(cells);
+  }
+  return rows;
+}
+}  // namespace
+
+TEST_CASE("minimize writes one CSV row per iteration", "[optimizers]") {
+  const auto dir = scratch_dir("csv");
+  parameter_space space({{"kp", 0.0, 10.0, 5.0}, {"kd", 0.0, 1.0, 0.5}, {"name,with,commas", -1, 1, 0}});
+  cmaes_options o;
+  o.stop.max_iterations = 25;
+  run_options ro;
+  ro.log_file = dir / "log.csv";
+  ro.log_parameters = true;
+  cmaes es(space, o);
+  std::vector<optimizer_status> seen;
+  const auto r = minimize(es, [](const Eigen::VectorXd& x) { return x.squaredNorm(); }, ro,
+                          [&](const optimizer_status& s) { seen.push_back(s); });
+  const auto rows = read_csv(ro.log_file);
+  REQUIRE(rows.size() == 26);
+  CHECK(rows[0][0] == "stage");
+  CHECK(rows[0][2] == "iteration");
+  CHECK(rows[0][13] == "kp");
+  CHECK(rows[0][15] == "\"name");  // quoted because of its commas
+  for (std::size_t i = 1; i < rows.size(); ++i) {
+    const auto& s = seen[i - 1];
+    CHECK(std::stoll(rows[i][2]) == s.iteration);
+    CHECK(std::stoll(rows[i][3]) == s.evaluations);
+    CHECK(std::stod(rows[i][4]) == s.best_value);  // %.17g round-trips
+    CHECK(std::stod(rows[i][8]) == s.step_size);
+  }
+  CHECK(std::stod(rows.back()[13]) == r.x[0]);
+  CHECK(r.iterations == 25);
+}
+
+TEST_CASE("minimize prints a compact progress line", "[optimizers]") {
+  std::ostringstream os;
+  run_options ro;
+  ro.progress = &os;
+  ro.progress_interval = 1e9;  // first and last iterations only
+  cmaes_options o;
+  o.stop.max_iterations = 40;
+  minimize(cmaes(parameter_space::unbounded(Eigen::VectorXd::Ones(4)), o), tf::sphere, ro);
+  const std::string out = os.str();
+  CHECK(std::count(out.begin(), out.end(), '\n') == 2);
+  CHECK_THAT(out, Contains("cmaes it 1 ") && Contains("it 40 ") && Contains("best ") &&
+                      Contains("med ") && Contains("step ") && Contains("axis ") &&
+                      Contains("left ~") && Contains("stop: max_iterations"));
+}
+
+TEST_CASE("continuation starts each stage from the previous result", "[optimizers]") {
+  // Stage k: minimum at c_k = 1, 2, 3 (like a horizon or slope that grows by stages).
+  const std::vector<double> centers = {1.3, 2.1, 3.7};
+  auto make_objective = [&](std::size_t k) { return tf::shifted_sphere{centers[k]}; };
+  const Eigen::VectorXd x0 = Eigen::VectorXd::Zero(4);
+  const auto space = parameter_space::unbounded(x0);
+  std::vector<Eigen::VectorXd> starts;
+
+  SECTION("with CMA-ES") {
+    auto make_optimizer = [&](std::size_t, const Eigen::VectorXd& start) {
+      starts.push_back(start);
+      cmaes_options o;
+      o.sigma0 = 0.5;
+      o.x0 = start;
+      o.stop.target_value = 1e-10;
+      return cmaes(space, o);
+    };
+    serial_evaluator e;
+    const auto r = continuation(3, x0, make_optimizer, make_objective, e);
+    REQUIRE(r.stages.size() == 3);
+    CHECK(identical(starts[0], x0));
+    CHECK(identical(starts[1], r.stages[0].x));
+    CHECK(identical(starts[2], r.stages[1].x));
+    for (std::size_t k = 0; k < 3; ++k) {
+      CHECK(r.stages[k].stopped == stop_criterion::target_value);
+      CHECK((r.stages[k].x.array() - centers[k]).abs().maxCoeff() < 1e-4);
+    }
+    CHECK(identical(r.x, r.stages[2].x));
+  }
+  SECTION("with SDS, checkpointed and resumed") {
+    const auto dir = scratch_dir("continuation");
+    auto make_optimizer = [&](std::size_t, const Eigen::VectorXd& start) {
+      starts.push_back(start);
+      sds_options o;
+      o.x0 = start;
+      o.initial_step = 0.5;
+      o.stop.target_value = 1e-10;
+      return sds(space, o);
+    };
+    run_options ro;
+    ro.checkpoint_file = dir / "cont.ckpt";
+    ro.checkpoint_every = 5;
+    ro.log_file = dir / "cont.csv";
+    ro.resume = true;
+    serial_evaluator e;
+    const auto ref = continuation(3, x0, make_optimizer, make_objective, e, ro);
+    CHECK((ref.x.array() - 3.7).abs().maxCoeff() < 1e-4);
+    // The log holds all three stages.
+    const auto rows = read_csv(ro.log_file);
+    CHECK(rows[1][0] == "0");
+    CHECK(rows.back()[0] == "2");
+    // Kill during stage 1, then resume: finished stage 0 is not run again.
+    std::filesystem::remove_all(dir);
+    std::filesystem::create_directories(dir);
+    std::int64_t calls = 0;
+    auto dying_objective = [&](std::size_t k) {
+      return [&, k](const Eigen::VectorXd& x) {
+        if (k == 1 && ++calls > 40) throw std::runtime_error("killed");
+        return tf::shifted_sphere{centers[k]}(x);
+      };
+    };
+    CHECK_THROWS(continuation(3, x0, make_optimizer, dying_objective, e, ro));
+    starts.clear();
+    const auto resumed = continuation(3, x0, make_optimizer, make_objective, e, ro);
+    CHECK(starts.size() == 2);  // stages 1 and 2 only
+    CHECK(std::filesystem::exists(dir / "cont.ckpt.stage1"));
+    REQUIRE(resumed.stages.size() == 3);
+    for (std::size_t k = 0; k < 3; ++k) {
+      CHECK(identical(resumed.stages[k].x, ref.stages[k].x));
+      CHECK(resumed.stages[k].evaluations == ref.stages[k].evaluations);
+    }
+  }
+}
