@@ -43,8 +43,22 @@ TEST_CASE("sharon2005_human7 reproduces Table I", "[models][sharon2005]") {
     // Table I's inertias are uniform rods about their centres, m L^2 / 12, to the printed digits;
     // so the COM is the rod's middle and the two link ends are the body origin and segment_end.
     CHECK(std::abs(r.mass * r.length * r.length / 12.0 - r.inertia) <= r.half_unit);
-    CHECK(b.segment_end.norm() == Approx(r.length));
-    CHECK(b.com.isApprox(0.5 * b.segment_end));
+    if (std::string(r.body).find("foot") == std::string::npos) {
+      CHECK(b.segment_end.norm() == Approx(r.length));
+      CHECK(b.com.isApprox(0.5 * b.segment_end));
+    } else {
+      // The foot rod runs through the ankle from the heel (a quarter of it behind) to the toe.
+      const int fb = m.body_index(r.body);
+      Eigen::Vector3d heel = Eigen::Vector3d::Zero(), toe = Eigen::Vector3d::Zero();
+      for (const contact_point& c : m.contact_points) {
+        if (c.body != fb) continue;
+        (c.role == contact_point::kind::sole ? heel : toe) = c.position;
+      }
+      CHECK((toe - heel).norm() == Approx(r.length));
+      CHECK(heel.x() == Approx(-0.25 * r.length));
+      CHECK(b.segment_end.isApprox(toe));
+      CHECK(b.com.isApprox(0.5 * (heel + toe)));
+    }
   }
   CHECK(m.total_mass() == 66.0);
   // Planar: everything in the x-z plane.
@@ -70,10 +84,17 @@ TEST_CASE("sharon2005_human7 geometry, contacts and mirror map", "[models][sharo
   models_test::check_mirror(m, 3);
   for (int j = 0; j < 6; ++j) CHECK(m.mirror_sign[j] == 1.0);  // planar: +y axes, no sign flip
   models_test::check_limit_stability(m);
-  // At q = 0 the whole-body COM is over the foot (between heel and toe): it can stand.
+  // At q = 0 the whole-body COM is over the foot, more than 5 cm inside the heel: it can stand.
   const Eigen::Vector3d c = models_test::neutral_com(m);
-  CHECK(c.x() > 0.0);
-  CHECK(c.x() < 0.22);
+  CHECK(c.x() > -0.055 + 0.05);
+  CHECK(c.x() < 0.165);
+  sharon2005_human7_parameters p;
+  p.heel_behind_ankle = 0.0;  // the ankle at the heel end of the foot
+  const planar_model at_heel = sharon2005_human7(p);
+  CHECK(at_heel.contact_points[0].position.x() == 0.0);
+  CHECK(at_heel.bodies[at_heel.body_index("lfoot")].segment_end.x() == Approx(0.22));
+  p.heel_behind_ankle = 1.5;
+  CHECK_THROWS_WITH(sharon2005_human7(p), Catch::Matchers::Contains("heel_behind_ankle"));
 }
 
 TEST_CASE("sharon2005_human7 parameters (Fig. 8 robustness variants)", "[models][sharon2005]") {
@@ -133,8 +154,8 @@ TEST_CASE("sharon2005_human16 from de Leva's table", "[models][sharon2005]") {
   CHECK(th.inertia(1, 1) == Approx(th.mass * std::pow(0.329 * th.length, 2)));
   CHECK(th.inertia(2, 2) == Approx(th.mass * std::pow(0.149 * th.length, 2)));
   const body& ft = m.bodies[m.body_index("lfoot")];
-  CHECK(ft.segment_end.x() == Approx(0.2581 * s));
-  CHECK(ft.com.x() == Approx(0.4415 * 0.2581 * s));
+  CHECK(ft.segment_end.x() == Approx(0.75 * 0.2581 * s));
+  CHECK(ft.com.x() == Approx((0.4415 - 0.25) * 0.2581 * s));
   // A standing human's COM is at about 55-57 % of stature (e.g. Winter 2009); feet flat under it.
   const Eigen::Vector3d c = models_test::neutral_com(m);
   CHECK((c.z() - neutral_lowest_contact(m)) / 1.741 == Approx(0.56).margin(0.02));

@@ -28,6 +28,9 @@ struct sharon2005_human7_parameters {
   double shin_mass = 4.0, shin_length = 0.44, shin_inertia = 0.0645;
   double foot_mass = 2.0, foot_length = 0.22, foot_inertia = 0.00807;
   double torque_limit = 370.0;  ///< N m, hips, knees and ankles (Section VI.A)
+  /// Where the ankle sits on the foot link: the heel is this fraction of the foot length behind
+  /// it (ours; the paper does not say). 0 puts the ankle at the heel end of the foot.
+  double heel_behind_ankle = 0.25;
 
   /// Table I's inertias are those of uniform thin rods, m L^2 / 12, to the printed digits; this
   /// returns a copy with every inertia recomputed that way from the current masses and lengths.
@@ -57,10 +60,11 @@ inline Eigen::Matrix3d rod_inertia(double I, int long_axis) {
 ///
 /// Geometry (docs/models.md): every link is a uniform rod (COM at its middle; Table I's inertias are
 /// m L^2 / 12). The torso rises from the hip joint (the root origin), the thigh and shin hang below
-/// it, and the foot runs forward (+x) from the ankle, which sits at its heel end: a chain of links
-/// joined at their ends, so each link's two end points (body origin and segment_end, which the
-/// mass-distance metric of eq. 2 uses) are the rod's ends. Contact points: heel (role sole, at the
-/// ankle) and toe (role toe, at the foot's tip) on each foot. Joint limits are exponential springs
+/// it, and the foot is a horizontal rod through the ankle from the heel, heel_behind_ankle * L
+/// behind it, to the toe (our choice: with the ankle at the heel the standing COM would be only 7
+/// mm inside the support). Link end points for the mass-distance metric of eq. 2: body origin and
+/// segment_end (the rod's far end; for the foot the ankle and the toe tip). Contact points: heel
+/// (role sole) and toe (role toe) at the ends of each foot. Joint limits are exponential springs
 /// (Section VI.A); their ranges and constants, which the paper leaves to [19], are ours.
 /// \throws std::invalid_argument naming a non-positive or non-finite parameter.
 inline planar_model sharon2005_human7(const sharon2005_human7_parameters& p = {}) {
@@ -79,6 +83,10 @@ inline planar_model sharon2005_human7(const sharon2005_human7_parameters& p = {}
   pos(p.foot_length, "sharon2005_human7_parameters.foot_length");
   pos(p.foot_inertia, "sharon2005_human7_parameters.foot_inertia");
   pos(p.torque_limit, "sharon2005_human7_parameters.torque_limit");
+  check_argument(p.heel_behind_ankle >= 0.0 && p.heel_behind_ankle <= 1.0,
+                 "sharon2005_human7_parameters.heel_behind_ankle must be in [0, 1], got ",
+                 p.heel_behind_ankle);
+  const double heel = -p.heel_behind_ankle * p.foot_length, toe = heel + p.foot_length;
 
   // Exponential limit springs: tau = -k (exp(s * overshoot) - 1) - d qdot past a bound. With
   // k = 10 N m and s = 20 /rad the spring gives 64 N m at 0.1 rad overshoot and 536 N m at 0.2 rad.
@@ -123,16 +131,16 @@ inline planar_model sharon2005_human7(const sharon2005_human7_parameters& p = {}
                 .parent = S + "shin",
                 .joint_offset = {0, 0, -p.shin_length},
                 .mass = p.foot_mass,
-                .com = {0.5 * p.foot_length, 0, 0},
+                .com = {0.5 * (heel + toe), 0, 0},
                 .inertia = rod_inertia(p.foot_inertia, 0),
                 .dofs = {{.name = S + "ankle", .axis = Y, .limit = ankle,
                           .torque_limit = p.torque_limit}},
-                .shapes = {capsule({0, 0, 0}, {p.foot_length, 0, 0}, 0.02)},
+                .shapes = {capsule({heel, 0, 0}, {toe, 0, 0}, 0.02)},
                 .length = p.foot_length,
-                .segment_end = {p.foot_length, 0, 0}});
-    b.add_contact_point({.name = S + "heel", .body = S + "foot", .position = {0, 0, 0},
+                .segment_end = {toe, 0, 0}});
+    b.add_contact_point({.name = S + "heel", .body = S + "foot", .position = {heel, 0, 0},
                          .role = contact_point::kind::sole});
-    b.add_contact_point({.name = S + "toe", .body = S + "foot", .position = {p.foot_length, 0, 0},
+    b.add_contact_point({.name = S + "toe", .body = S + "foot", .position = {toe, 0, 0},
                          .role = contact_point::kind::toe});
   }
   return b.build();
@@ -154,8 +162,9 @@ struct sharon2005_human16_parameters {
 ///   lshoulder, lelbow, lwrist, rshoulder, relbow, rwrist
 /// (the first six as in the 7-link human). Masses are de Leva's percentages of `mass`, inertias
 /// his radii of gyration; all lengths are de Leva's scaled by one factor so that the vertex stands
-/// `height` above the sole. As in the 7-link model the foot is a link running forward from the
-/// ankle at its heel end, with heel (sole) and toe (toe) contact points.
+/// `height` above the sole. As in the 7-link model the foot is a horizontal link through the ankle
+/// at the sole, its heel 25 % of its length behind the ankle, with heel (sole) and toe (toe)
+/// contact points at its ends.
 /// \throws std::invalid_argument naming a non-positive or non-finite height, mass or torque limit.
 inline planar_model sharon2005_human16(const sharon2005_human16_parameters& p = {}) {
   using namespace detail::characters;
@@ -192,6 +201,7 @@ inline planar_model sharon2005_human16(const sharon2005_human16_parameters& p = 
               .length = Llpt,
               .segment_end = {0, 0, Llpt}});
   const double Lth = len(dl::thigh), Lsh = len(dl::shank), Lft = len(dl::foot);
+  const double heel = -0.25 * Lft, toe = heel + Lft;
   for (const char* side : {"l", "r"}) {
     const std::string S = side;
     b.add_body({.name = S + "thigh",
@@ -219,16 +229,16 @@ inline planar_model sharon2005_human16(const sharon2005_human16_parameters& p = 
                 .parent = S + "shin",
                 .joint_offset = {0, 0, -Lsh},
                 .mass = mass(dl::foot),
-                .com = {0.01 * dl::foot.com_percent * Lft, 0, 0},
+                .com = {heel + 0.01 * dl::foot.com_percent * Lft, 0, 0},
                 .inertia = dl::foot_inertia(mass(dl::foot), Lft),
                 .dofs = {{.name = S + "ankle", .axis = Y, .limit = lim(-0.6, 0.9, 10, 2),
                           .torque_limit = T}},
-                .shapes = {capsule({0, 0, 0}, {Lft, 0, 0}, 0.025)},
+                .shapes = {capsule({heel, 0, 0}, {toe, 0, 0}, 0.025)},
                 .length = Lft,
-                .segment_end = {Lft, 0, 0}});
-    b.add_contact_point({.name = S + "heel", .body = S + "foot", .position = {0, 0, 0},
+                .segment_end = {toe, 0, 0}});
+    b.add_contact_point({.name = S + "heel", .body = S + "foot", .position = {heel, 0, 0},
                          .role = contact_point::kind::sole});
-    b.add_contact_point({.name = S + "toe", .body = S + "foot", .position = {Lft, 0, 0},
+    b.add_contact_point({.name = S + "toe", .body = S + "foot", .position = {toe, 0, 0},
                          .role = contact_point::kind::toe});
   }
   b.add_body({.name = "abdomen",
