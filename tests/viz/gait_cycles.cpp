@@ -46,8 +46,10 @@ TEST_CASE("gait_cycles: mean of a periodic motion is its curve, spread is zero",
   const double t0 = d.cycle_starts[0];
   for (std::size_t s = 0; s < d.percent.size(); s += 10) {
     const double ph = 2 * std::numbers::pi * (t0 + d.percent[s] / 100.0 * period) / period;
-    CHECK(d.mean[0][s] == Approx(viz_test::walk_angle("lhip", ph) * 180 / std::numbers::pi).margin(1e-6));
-    CHECK(d.mean[1][s] == Approx(viz_test::walk_angle("lknee", ph) * 180 / std::numbers::pi).margin(1e-6));
+    CHECK(d.mean[0][s] ==
+          Approx(viz_test::walk_angle("lhip", ph) * 180 / std::numbers::pi).margin(1e-6));
+    CHECK(d.mean[1][s] ==
+          Approx(viz_test::walk_angle("lknee", ph) * 180 / std::numbers::pi).margin(1e-6));
     CHECK(d.stddev[0][s] < 1e-6);
   }
 }
@@ -59,7 +61,9 @@ TEST_CASE("gait_cycles: segment and relative pitch channels, given starts", "[vi
   o.cycle_starts = {0.5, 1.5, 2.5};
   o.samples = 11;
   gait_channel thigh{.type = gait_channel::kind::segment_pitch, .label = "thigh", .name = "lthigh"};
-  gait_channel knee{.type = gait_channel::kind::relative_pitch, .label = "knee", .name = "lshin",
+  gait_channel knee{.type = gait_channel::kind::relative_pitch,
+                    .label = "knee",
+                    .name = "lshin",
                     .reference = "lthigh"};
   gait_channel hip{.type = gait_channel::kind::joint_angle, .name = "lhip", .scale = 1.0};
   o.channels = {thigh, knee, hip};

@@ -55,11 +55,13 @@ TEST_CASE("compute_body_poses: floating root and two DOFs in one body", "[viz][s
   compute_body_poses(m, q, p, r);
   const int thigh = m.body_index("rthigh");
   // Intrinsic composition in DOF order (model.hpp): R = R_root * Rx(0.3) * Ry(-0.6).
-  const Eigen::Matrix3d expected = root.toRotationMatrix() *
-                                   Eigen::AngleAxisd(0.3, Eigen::Vector3d::UnitX()).toRotationMatrix() *
-                                   Eigen::AngleAxisd(-0.6, Eigen::Vector3d::UnitY()).toRotationMatrix();
+  const Eigen::Matrix3d expected =
+      root.toRotationMatrix() *
+      Eigen::AngleAxisd(0.3, Eigen::Vector3d::UnitX()).toRotationMatrix() *
+      Eigen::AngleAxisd(-0.6, Eigen::Vector3d::UnitY()).toRotationMatrix();
   CHECK((r[thigh].toRotationMatrix() - expected).norm() < 1e-12);
-  CHECK((p[thigh] - (Eigen::Vector3d(1, 2, 3) + root * Eigen::Vector3d(0, -0.1, -0.07))).norm() < 1e-12);
+  CHECK((p[thigh] - (Eigen::Vector3d(1, 2, 3) + root * Eigen::Vector3d(0, -0.1, -0.07))).norm() <
+        1e-12);
   Eigen::VectorXd bad = q.head(5);
   CHECK_THROWS_AS(compute_body_poses(m, bad, p, r), std::invalid_argument);
 }
@@ -87,10 +89,12 @@ TEST_CASE("fill_missing_kinematics completes a hand-made trajectory", "[viz][sce
   CHECK(f.com.x() == Approx(2 * 1 * 0.05 / m.total_mass()).margin(1e-12));
   traj.frames[0].q = Eigen::VectorXd::Zero(2);
   traj.frames[0].body_position.clear();
-  CHECK_THROWS_WITH(fill_missing_kinematics(m, traj), Catch::Contains("frame 0") && Catch::Contains("nq"));
+  CHECK_THROWS_WITH(fill_missing_kinematics(m, traj),
+                    Catch::Contains("frame 0") && Catch::Contains("nq"));
 }
 
-TEST_CASE("terrain_height interpolates the samples bilinearly and is exact on planes", "[viz][scene]") {
+TEST_CASE("terrain_height interpolates the samples bilinearly and is exact on planes",
+          "[viz][scene]") {
   terrain_samples ts;
   CHECK(terrain_height(ts, 3, 4) == 0.0);  // flat ground
   ts.x0 = -1;
@@ -101,7 +105,8 @@ TEST_CASE("terrain_height interpolates the samples bilinearly and is exact on pl
   ts.ny = 17;
   auto plane = [](double x, double y) { return 0.1 + 0.2 * x - 0.05 * y; };
   for (int j = 0; j < ts.ny; ++j)
-    for (int i = 0; i < ts.nx; ++i) ts.height.push_back(plane(ts.x0 + i * ts.dx, ts.y0 + j * ts.dy));
+    for (int i = 0; i < ts.nx; ++i)
+      ts.height.push_back(plane(ts.x0 + i * ts.dx, ts.y0 + j * ts.dy));
   for (double x : {-1.0, -0.7, 0.0, 1.13, 2.9})
     for (double y : {-2.0, -1.1, 0.37, 1.99})
       CHECK(terrain_height(ts, x, y) == Approx(plane(x, y)).margin(1e-12));

@@ -36,18 +36,31 @@ model<Root> make_biped() {
   shape pelvis_box;
   pelvis_box.type = shape::kind::box;
   pelvis_box.half_extents = {0.08, 0.14, 0.07};
-  b.add_body({.name = "pelvis", .mass = 10, .inertia = box_inertia(10, 0.16, 0.28, 0.14),
+  b.add_body({.name = "pelvis",
+              .mass = 10,
+              .inertia = box_inertia(10, 0.16, 0.28, 0.14),
               .shapes = {pelvis_box}});
-  b.add_body({.name = "torso", .parent = "pelvis", .joint_offset = {0, 0, 0.08}, .mass = 25,
-              .com = {0, 0, 0.25}, .inertia = box_inertia(25, 0.2, 0.3, 0.5),
-              .dofs = {{.name = "back"}}, .length = 0.5, .segment_end = {0, 0, 0.5}});
+  b.add_body({.name = "torso",
+              .parent = "pelvis",
+              .joint_offset = {0, 0, 0.08},
+              .mass = 25,
+              .com = {0, 0, 0.25},
+              .inertia = box_inertia(25, 0.2, 0.3, 0.5),
+              .dofs = {{.name = "back"}},
+              .length = 0.5,
+              .segment_end = {0, 0, 0.5}});
   shape head;
   head.type = shape::kind::sphere;
   head.center = {0, 0, 0.1};
   head.radius = 0.1;
-  b.add_body({.name = "head", .parent = "torso", .joint_offset = {0, 0, 0.5}, .mass = 5,
-              .com = {0, 0, 0.1}, .inertia = box_inertia(5, 0.2, 0.2, 0.2),
-              .dofs = {{.name = "neck"}}, .shapes = {head}});
+  b.add_body({.name = "head",
+              .parent = "torso",
+              .joint_offset = {0, 0, 0.5},
+              .mass = 5,
+              .com = {0, 0, 0.1},
+              .inertia = box_inertia(5, 0.2, 0.2, 0.2),
+              .dofs = {{.name = "neck"}},
+              .shapes = {head}});
   for (const char* s : {"l", "r"}) {
     const std::string p(s);
     const double y = p == "l" ? 0.1 : -0.1;
@@ -56,24 +69,43 @@ model<Root> make_biped() {
     thigh.p1 = {0, 0, -thigh_len};
     thigh.radius = 0.06;
     std::vector<dof_spec> hip{{.name = p + "hip"}};
-    if constexpr (Root::nq == 7) hip.insert(hip.begin(), dof_spec{.name = p + "hip_x", .axis = {1, 0, 0}});
-    b.add_body({.name = p + "thigh", .parent = "pelvis", .joint_offset = {0, y, -0.07}, .mass = 7,
-                .com = {0, 0, -0.2}, .inertia = box_inertia(7, 0.1, 0.1, thigh_len), .dofs = hip,
-                .shapes = {thigh}, .length = thigh_len, .segment_end = {0, 0, -thigh_len}});
+    if constexpr (Root::nq == 7)
+      hip.insert(hip.begin(), dof_spec{.name = p + "hip_x", .axis = {1, 0, 0}});
+    b.add_body({.name = p + "thigh",
+                .parent = "pelvis",
+                .joint_offset = {0, y, -0.07},
+                .mass = 7,
+                .com = {0, 0, -0.2},
+                .inertia = box_inertia(7, 0.1, 0.1, thigh_len),
+                .dofs = hip,
+                .shapes = {thigh},
+                .length = thigh_len,
+                .segment_end = {0, 0, -thigh_len}});
     shape shin = thigh;
     shin.p1 = {0, 0, -shin_len};
     shin.radius = 0.05;
-    b.add_body({.name = p + "shin", .parent = p + "thigh", .joint_offset = {0, 0, -thigh_len},
-                .mass = 4, .com = {0, 0, -0.2}, .inertia = box_inertia(4, 0.08, 0.08, shin_len),
-                .dofs = {{.name = p + "knee"}}, .shapes = {shin}, .length = shin_len,
+    b.add_body({.name = p + "shin",
+                .parent = p + "thigh",
+                .joint_offset = {0, 0, -thigh_len},
+                .mass = 4,
+                .com = {0, 0, -0.2},
+                .inertia = box_inertia(4, 0.08, 0.08, shin_len),
+                .dofs = {{.name = p + "knee"}},
+                .shapes = {shin},
+                .length = shin_len,
                 .segment_end = {0, 0, -shin_len}});
     shape foot;
     foot.type = shape::kind::box;
     foot.center = {0.05, 0, -0.03};
     foot.half_extents = {0.11, 0.05, 0.03};
-    b.add_body({.name = p + "foot", .parent = p + "shin", .joint_offset = {0, 0, -shin_len},
-                .mass = 1, .com = {0.05, 0, -0.03}, .inertia = box_inertia(1, 0.22, 0.1, 0.06),
-                .dofs = {{.name = p + "ankle"}}, .shapes = {foot}});
+    b.add_body({.name = p + "foot",
+                .parent = p + "shin",
+                .joint_offset = {0, 0, -shin_len},
+                .mass = 1,
+                .com = {0.05, 0, -0.03},
+                .inertia = box_inertia(1, 0.22, 0.1, 0.06),
+                .dofs = {{.name = p + "ankle"}},
+                .shapes = {foot}});
     b.add_contact_point({.name = p + "heel", .body = p + "foot", .position = {-0.06, 0, -0.06}});
     b.add_contact_point({.name = p + "toe", .body = p + "foot", .position = {0.16, 0, -0.06}});
   }
@@ -112,13 +144,15 @@ trajectory make_walk(const model<Root>& m, double duration = 2.5, double dt = 0.
     for (int j = 0; j < m.num_joint_dofs(); ++j) q[Root::nq + j] = walk_angle(m.dofs[j].name, ph);
     if constexpr (Root::nq == 3) q[2] = 0.04 * std::sin(2 * ph);
     if constexpr (Root::nq == 7) {
-      const Eigen::Quaterniond yaw(Eigen::AngleAxisd(0.03 * std::sin(ph), Eigen::Vector3d::UnitZ()));
+      const Eigen::Quaterniond yaw(
+          Eigen::AngleAxisd(0.03 * std::sin(ph), Eigen::Vector3d::UnitZ()));
       q.segment<4>(3) << yaw.w(), yaw.x(), yaw.y(), yaw.z();
     }
     // Lower the root until the lowest contact point is on the ground.
     compute_body_poses(m, q, p, r);
     double zmin = 1e9;
-    for (const auto& c : m.contact_points) zmin = std::min(zmin, (p[c.body] + r[c.body] * c.position).z());
+    for (const auto& c : m.contact_points)
+      zmin = std::min(zmin, (p[c.body] + r[c.body] * c.position).z());
     q[Root::nq == 3 ? 1 : 2] -= zmin;
     fr.q = q;
     fr.v = Eigen::VectorXd::Zero(m.nv());
@@ -140,7 +174,8 @@ trajectory make_walk(const model<Root>& m, double duration = 2.5, double dt = 0.
       }
     }
     for (int c = 0; c < nc; ++c)
-      if (fr.contact_active[c]) fr.contact_force[c] = Eigen::Vector3d(-0.1 * g / active, 0, g / active);
+      if (fr.contact_active[c])
+        fr.contact_force[c] = Eigen::Vector3d(-0.1 * g / active, 0, g / active);
     if (fr.t >= 1.0 && fr.t < 1.2) fr.pushes.emplace_back(0, Eigen::Vector3d(0, 150, 0));
     effort += fr.tau.squaredNorm() * dt;
     fr.objective_terms = {q[0], effort};

@@ -1,6 +1,7 @@
 #pragma once
 /// \file bvh.hpp
-/// Biovision Hierarchy (BVH) export of a recorded trajectory, for Blender and other animation tools.
+/// Biovision Hierarchy (BVH) export of a recorded trajectory, for Blender and other animation
+/// tools.
 ///
 /// Hierarchy: one BVH joint per body, named like the body, nested as the model's tree (children in
 /// body index order); the root body is the ROOT. OFFSET of a joint = the body's joint_offset (its
@@ -17,13 +18,13 @@
 ///
 /// Units and axes (bvh_options): lengths are multiplied by `scale`, 100 by default, so the file is
 /// in centimetres as most BVH tools expect (use 1 to keep metres; Blender's importer has its own
-/// scale option). With `y_up` (default) gaitsynth's z-up world is turned into the Y-up convention of
-/// BVH: (x, y, z) -> (x, z, -y), a proper rotation, so the walk along +x stays along +X and up is
-/// +Y; rotations are conjugated by the same change of axes. With y_up = false the axes are kept.
+/// scale option). With `y_up` (default) gaitsynth's z-up world is turned into the Y-up convention
+/// of BVH: (x, y, z) -> (x, z, -y), a proper rotation, so the walk along +x stays along +X and up
+/// is +Y; rotations are conjugated by the same change of axes. With y_up = false the axes are kept.
 ///
 /// Frames: BVH needs a fixed frame time. `frame_time` 0 uses the median spacing of the recorded
-/// frames; frames are then taken as the recorded frame nearest to t0 + k * frame_time (an exact copy
-/// when the recording is uniform, no interpolation).
+/// frames; frames are then taken as the recorded frame nearest to t0 + k * frame_time (an exact
+/// copy when the recording is uniform, no interpolation).
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 #include <algorithm>
@@ -44,10 +45,10 @@
 namespace gaitsynth {
 
 struct bvh_options {
-  double scale = 100.0;    ///< length multiplier: 100 writes centimetres, 1 metres
-  bool y_up = true;        ///< convert z-up to BVH's Y-up: (x, y, z) -> (x, z, -y)
-  double frame_time = 0;   ///< s; 0: median spacing of the recorded frames
-  int precision = 6;       ///< significant digits of the motion values
+  double scale = 100.0;   ///< length multiplier: 100 writes centimetres, 1 metres
+  bool y_up = true;       ///< convert z-up to BVH's Y-up: (x, y, z) -> (x, z, -y)
+  double frame_time = 0;  ///< s; 0: median spacing of the recorded frames
+  int precision = 6;      ///< significant digits of the motion values
 };
 
 /// ZXY Euler angles (radians) of a rotation matrix: R = Rz(z) Rx(x) Ry(y). Returns (z, x, y) with
@@ -101,8 +102,8 @@ inline std::string num(double x, int precision) {
 
 }  // namespace detail::bvh
 
-/// Writes the BVH file (see the file comment). Throws std::invalid_argument when the trajectory does
-/// not fit the model, has no frames, or the options are invalid.
+/// Writes the BVH file (see the file comment). Throws std::invalid_argument when the trajectory
+/// does not fit the model, has no frames, or the options are invalid.
 template <root_joint Root>
 void write_bvh(const model<Root>& m, const trajectory& traj, std::ostream& os,
                const bvh_options& opt = {}) {
@@ -152,12 +153,13 @@ void write_bvh(const model<Root>& m, const trajectory& traj, std::ostream& os,
     const std::string ind(2 * depth, ' ');
     const body& b = m.bodies[i];
     if (i == 0) {
-      h += "ROOT " + b.name + "\n{\n  OFFSET 0 0 0\n"
+      h += "ROOT " + b.name +
+           "\n{\n  OFFSET 0 0 0\n"
            "  CHANNELS 6 Xposition Yposition Zposition Zrotation Xrotation Yrotation\n";
     } else {
       const Eigen::Vector3d o = opt.scale * (C * b.joint_offset);
-      h += ind + "JOINT " + b.name + "\n" + ind + "{\n" + ind + "  OFFSET " +
-           num(o.x(), 9) + " " + num(o.y(), 9) + " " + num(o.z(), 9) + "\n" + ind +
+      h += ind + "JOINT " + b.name + "\n" + ind + "{\n" + ind + "  OFFSET " + num(o.x(), 9) + " " +
+           num(o.y(), 9) + " " + num(o.z(), 9) + "\n" + ind +
            "  CHANNELS 3 Zrotation Xrotation Yrotation\n";
     }
     for (int c : children[i]) self(self, c, depth + 1);
@@ -203,7 +205,10 @@ void write_bvh(const model<Root>& m, const trajectory& traj, std::ostream& os,
       const Eigen::Vector3d a =
           detail::bvh::continuous_zxy(C * Rl * C.transpose(), k == 0 ? nullptr : &prev[i]);
       prev[i] = a;
-      for (int c = 0; c < 3; ++c) line += " " + num(a[c] * deg, opt.precision);
+      for (int c = 0; c < 3; ++c) {
+        line += ' ';
+        line += num(a[c] * deg, opt.precision);
+      }
     }
     line += '\n';
     os << line;

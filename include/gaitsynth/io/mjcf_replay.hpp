@@ -29,10 +29,10 @@
 namespace gaitsynth {
 
 struct mjcf_replay_options {
-  mjcf_options model;       ///< passed to write_mjcf (its keyframe_q / keyframe_v are ignored)
-  double interval = 0.0;    ///< s between keys (nearest recorded frame); 0: every frame
-  int max_keys = 2000;      ///< more frames than this are thinned by a constant stride
-  bool velocities = true;   ///< write qvel too (needs the frames' v)
+  mjcf_options model;      ///< passed to write_mjcf (its keyframe_q / keyframe_v are ignored)
+  double interval = 0.0;   ///< s between keys (nearest recorded frame); 0: every frame
+  int max_keys = 2000;     ///< more frames than this are thinned by a constant stride
+  bool velocities = true;  ///< write qvel too (needs the frames' v)
 };
 
 namespace detail::mjcf_replay {
@@ -82,13 +82,19 @@ void write_mjcf_keyframes(const model<Root>& m, const trajectory& traj, std::ost
     if constexpr (Root::nq == 7) q.segment<4>(3).normalize();  // MuJoCo wants a unit quaternion
     const Eigen::VectorXd qpos = to_mjcf_qpos(m, q);
     x += "    <key name=\"f" + std::to_string(f) + "\" time=\"" + num(fr.t) + "\" qpos=\"";
-    for (Eigen::Index i = 0; i < qpos.size(); ++i) x += (i ? " " : "") + num(qpos[i]);
+    for (Eigen::Index i = 0; i < qpos.size(); ++i) {
+      if (i) x += ' ';
+      x += num(qpos[i]);
+    }
     x += "\"";
     if (opt.velocities && fr.v.size() == m.nv() && m.nv() > 0) {
       check_finite(fr.v, "write_mjcf_keyframes: frame v");
       const Eigen::VectorXd qvel = to_mjcf_qvel(m, fr.v);
       x += " qvel=\"";
-      for (Eigen::Index i = 0; i < qvel.size(); ++i) x += (i ? " " : "") + num(qvel[i]);
+      for (Eigen::Index i = 0; i < qvel.size(); ++i) {
+        if (i) x += ' ';
+        x += num(qvel[i]);
+      }
       x += "\"";
     }
     x += "/>\n";
@@ -136,13 +142,19 @@ void write_mjcf_qpos_csv(const model<Root>& m, const trajectory& traj, std::ostr
   const std::vector<std::string> names = q_coordinate_names(m);
   const std::vector<int> idx = mjcf_qpos_index(m);
   std::string x = "time";
-  for (int i : idx) x += "," + names[i];
+  for (int i : idx) {
+    x += ',';
+    x += names[i];
+  }
   x += '\n';
   for (const auto& fr : traj.frames) {
     Eigen::VectorXd q = fr.q;
     if constexpr (Root::nq == 7) q.segment<4>(3).normalize();
     x += num(fr.t);
-    for (int i : idx) x += "," + num(q[i]);
+    for (int i : idx) {
+      x += ',';
+      x += num(q[i]);
+    }
     x += '\n';
   }
   os << x;

@@ -73,10 +73,9 @@ namespace detail::trajectory_csv {
 
 inline void append_number(std::string& out, double x, int precision) {
   char buf[64];
-  std::to_chars_result r = precision > 0
-                               ? std::to_chars(buf, buf + sizeof buf, x, std::chars_format::general,
-                                               precision)
-                               : std::to_chars(buf, buf + sizeof buf, x);
+  std::to_chars_result r =
+      precision > 0 ? std::to_chars(buf, buf + sizeof buf, x, std::chars_format::general, precision)
+                    : std::to_chars(buf, buf + sizeof buf, x);
   out.append(buf, r.ptr);
 }
 
@@ -88,8 +87,12 @@ inline const char* q_unit(std::string_view n) {
   if (n == "root_qw" || n == "root_qx" || n == "root_qy" || n == "root_qz") return "1";
   return "rad";
 }
-inline const char* v_unit(std::string_view n) { return is_root_translation(n) ? "m/s" : "rad/s"; }
-inline const char* tau_unit(std::string_view n) { return is_root_translation(n) ? "N" : "N m"; }
+inline const char* v_unit(std::string_view n) {
+  return is_root_translation(n) ? "m/s" : "rad/s";
+}
+inline const char* tau_unit(std::string_view n) {
+  return is_root_translation(n) ? "N" : "N m";
+}
 
 /// Names go into CSV header cells: no separators, quotes or line breaks.
 inline void check_name(const std::string& n, const char* what) {
@@ -145,8 +148,8 @@ inline void write_trajectory_csv(const trajectory& traj, std::ostream& os,
   for (const auto& n : traj.contact_names) check_name(n, "contact");
   for (const auto& n : traj.objective_term_names) check_name(n, "objective term");
   const terrain_samples& ts = traj.terrain;
-  const std::size_t nh = static_cast<std::size_t>(std::max(ts.nx, 0)) *
-                         static_cast<std::size_t>(std::max(ts.ny, 0));
+  const std::size_t nh =
+      static_cast<std::size_t>(std::max(ts.nx, 0)) * static_cast<std::size_t>(std::max(ts.ny, 0));
   check_argument(ts.nx >= 0 && ts.ny >= 0 && ts.height.size() == nh,
                  "write_trajectory_csv: terrain has nx = ", ts.nx, ", ny = ", ts.ny, " but ",
                  ts.height.size(), " heights");
@@ -162,9 +165,8 @@ inline void write_trajectory_csv(const trajectory& traj, std::ostream& os,
   const bool has_tau = group_present(traj, nv, "tau", [](const trajectory_frame& f) {
     return static_cast<std::size_t>(f.tau.size());
   });
-  const bool has_body = group_present(traj, nb, "body_position", [](const trajectory_frame& f) {
-    return f.body_position.size();
-  });
+  const bool has_body = group_present(
+      traj, nb, "body_position", [](const trajectory_frame& f) { return f.body_position.size(); });
   group_present(traj, has_body ? nb : 0, "body_orientation",
                 [](const trajectory_frame& f) { return f.body_orientation.size(); });
   if (!has_body)
@@ -174,9 +176,8 @@ inline void write_trajectory_csv(const trajectory& traj, std::ostream& os,
   const bool has_cpos = group_present(traj, nc, "contact_position", [](const trajectory_frame& f) {
     return f.contact_position.size();
   });
-  const bool has_cforce = group_present(traj, nc, "contact_force", [](const trajectory_frame& f) {
-    return f.contact_force.size();
-  });
+  const bool has_cforce = group_present(
+      traj, nc, "contact_force", [](const trajectory_frame& f) { return f.contact_force.size(); });
   const bool has_cact = group_present(traj, nc, "contact_active", [](const trajectory_frame& f) {
     return f.contact_active.size();
   });
@@ -195,8 +196,9 @@ inline void write_trajectory_csv(const trajectory& traj, std::ostream& os,
   std::sort(pushed.begin(), pushed.end());
 
   std::string out;
-  out += "# gaitsynth trajectory csv 1\n# model: " + traj.model_name + "\n# planar: " +
-         (traj.planar ? "1" : "0") + "\n# frames: " + std::to_string(traj.frames.size()) + "\n";
+  out += "# gaitsynth trajectory csv 1\n# model: " + traj.model_name +
+         "\n# planar: " + (traj.planar ? "1" : "0") +
+         "\n# frames: " + std::to_string(traj.frames.size()) + "\n";
   for (std::size_t b = 0; b < nb; ++b)
     out += "# body: " + std::to_string(b) + " " + std::to_string(traj.body_parents[b]) + " " +
            traj.body_names[b] + "\n";
@@ -333,8 +335,9 @@ inline trajectory read_trajectory_csv(std::istream& is, const std::string& sourc
   if (lines.empty()) throw fail(0, 0, "empty file");
   const std::string_view magic = "# gaitsynth trajectory csv 1";
   if (lines[0] != magic)
-    throw fail(1, 0, "not a gaitsynth trajectory CSV (first line must be '" + std::string(magic) +
-                         "', got '" + std::string(lines[0].substr(0, 60)) + "')");
+    throw fail(1, 0,
+               "not a gaitsynth trajectory CSV (first line must be '" + std::string(magic) +
+                   "', got '" + std::string(lines[0].substr(0, 60)) + "')");
   auto parse_number = [&](std::string_view s, int line, int col, const std::string& colname) {
     double x = 0;
     if (s.empty()) throw fail(line, col, "empty value in column '" + colname + "'");
@@ -351,8 +354,8 @@ inline trajectory read_trajectory_csv(std::istream& is, const std::string& sourc
     long long x = 0;
     auto r = std::from_chars(s.data(), s.data() + s.size(), x);
     if (r.ec != std::errc() || r.ptr != s.data() + s.size())
-      throw fail(line, 0, std::string("cannot read '") + std::string(s) + "' as an integer (" +
-                              what + ")");
+      throw fail(line, 0,
+                 std::string("cannot read '") + std::string(s) + "' as an integer (" + what + ")");
     return x;
   };
   trajectory traj;
@@ -380,8 +383,9 @@ inline trajectory read_trajectory_csv(std::istream& is, const std::string& sourc
             v = {};
             continue;
           }
-          throw fail(ln, 0, "metadata '" + std::string(key) + "' has too few fields: '" +
-                                std::string(val) + "'");
+          throw fail(
+              ln, 0,
+              "metadata '" + std::string(key) + "' has too few fields: '" + std::string(val) + "'");
         }
         w.push_back(v.substr(0, sp));
         v = v.substr(sp + 1);
@@ -403,16 +407,19 @@ inline trajectory read_trajectory_csv(std::istream& is, const std::string& sourc
       auto& names = key == "body" ? traj.body_names : traj.contact_names;
       auto& ids = key == "body" ? traj.body_parents : traj.contact_bodies;
       if (idx != static_cast<long long>(names.size()))
-        throw fail(ln, 0, std::string(key) + " index " + std::to_string(idx) + " out of order (expected " +
-                              std::to_string(names.size()) + ")");
-      if (rest.empty()) throw fail(ln, 0, std::string(key) + " " + std::to_string(idx) + " has no name");
+        throw fail(ln, 0,
+                   std::string(key) + " index " + std::to_string(idx) + " out of order (expected " +
+                       std::to_string(names.size()) + ")");
+      if (rest.empty())
+        throw fail(ln, 0, std::string(key) + " " + std::to_string(idx) + " has no name");
       names.push_back(rest);
       ids.push_back(static_cast<int>(other));
     } else if (key == "terrain") {
       std::istringstream s{std::string(val)};
       std::string a[6];
       for (auto& x : a)
-        if (!(s >> x)) throw fail(ln, 0, "terrain needs x0 y0 dx dy nx ny, got '" + std::string(val) + "'");
+        if (!(s >> x))
+          throw fail(ln, 0, "terrain needs x0 y0 dx dy nx ny, got '" + std::string(val) + "'");
       traj.terrain.x0 = parse_number(a[0], ln, 0, "terrain x0");
       traj.terrain.y0 = parse_number(a[1], ln, 0, "terrain y0");
       traj.terrain.dx = parse_number(a[2], ln, 0, "terrain dx");
@@ -428,11 +435,13 @@ inline trajectory read_trajectory_csv(std::istream& is, const std::string& sourc
   if (traj.terrain.nx < 0 || traj.terrain.ny < 0 ||
       traj.terrain.height.size() !=
           static_cast<std::size_t>(traj.terrain.nx) * static_cast<std::size_t>(traj.terrain.ny))
-    throw fail(0, 0, "terrain declares " + std::to_string(traj.terrain.nx) + " x " +
-                         std::to_string(traj.terrain.ny) + " samples but lists " +
-                         std::to_string(traj.terrain.height.size()) + " heights");
+    throw fail(0, 0,
+               "terrain declares " + std::to_string(traj.terrain.nx) + " x " +
+                   std::to_string(traj.terrain.ny) + " samples but lists " +
+                   std::to_string(traj.terrain.height.size()) + " heights");
   if (declared_frames < 0) throw fail(0, 0, "no '# frames: N' metadata line");
-  if (li >= lines.size()) throw fail(static_cast<int>(li) + 1, 0, "missing header line (truncated file?)");
+  if (li >= lines.size())
+    throw fail(static_cast<int>(li) + 1, 0, "missing header line (truncated file?)");
   // Header.
   const int header_line = static_cast<int>(li) + 1;
   std::vector<std::string> names;
@@ -513,8 +522,9 @@ inline trajectory read_trajectory_csv(std::istream& is, const std::string& sourc
       split_comp(who, comp);
       const auto it = body_id.find(who);
       if (it == body_id.end())
-        throw fail(header_line, cn, "header cell '" + full + "' names body '" + who +
-                                        "', not in the '# body:' lines");
+        throw fail(
+            header_line, cn,
+            "header cell '" + full + "' names body '" + who + "', not in the '# body:' lines");
       c.index = it->second;
       if (kind == "body") {
         c.type = column::kind::body;
@@ -530,8 +540,9 @@ inline trajectory read_trajectory_csv(std::istream& is, const std::string& sourc
       split_comp(who, comp);
       const auto it = contact_id.find(who);
       if (it == contact_id.end())
-        throw fail(header_line, cn, "header cell '" + full + "' names contact point '" + who +
-                                        "', not in the '# contact:' lines");
+        throw fail(header_line, cn,
+                   "header cell '" + full + "' names contact point '" + who +
+                       "', not in the '# contact:' lines");
       c.type = column::kind::contact;
       c.index = it->second;
       c.component = comp_index(comp, {"x", "y", "z", "fx", "fy", "fz", "active"});
@@ -545,23 +556,25 @@ inline trajectory read_trajectory_csv(std::istream& is, const std::string& sourc
   const bool has_v = !traj.v_names.empty();
   if (!has_v) traj.v_names = tau_names;  // torques without velocities
   if (ntau != 0 && tau_names != traj.v_names)
-    throw fail(header_line, 0, "the tau columns (" + std::to_string(ntau) +
-                                   ") do not name the same coordinates as the v columns (" +
-                                   std::to_string(traj.v_names.size()) + ")");
-  if (com_cols != 3) throw fail(header_line, 0, "expected 3 com columns, got " + std::to_string(com_cols));
+    throw fail(header_line, 0,
+               "the tau columns (" + std::to_string(ntau) +
+                   ") do not name the same coordinates as the v columns (" +
+                   std::to_string(traj.v_names.size()) + ")");
+  if (com_cols != 3)
+    throw fail(header_line, 0, "expected 3 com columns, got " + std::to_string(com_cols));
   const bool has_body = nb > 0 && body_cols[0] > 0;
   for (std::size_t b = 0; b < nb; ++b)
     if (body_cols[b] != (has_body ? 7 : 0))
-      throw fail(header_line, 0, "body '" + traj.body_names[b] + "' has " +
-                                     std::to_string(body_cols[b]) + " pose columns, expected " +
-                                     (has_body ? "7" : "0"));
+      throw fail(header_line, 0,
+                 "body '" + traj.body_names[b] + "' has " + std::to_string(body_cols[b]) +
+                     " pose columns, expected " + (has_body ? "7" : "0"));
   auto uniform = [&](const std::vector<int>& v, int per, const char* what) {
     const bool present = !v.empty() && v[0] > 0;
     for (std::size_t c = 0; c < v.size(); ++c)
       if (v[c] != (present ? per : 0))
-        throw fail(header_line, 0, "contact point '" + traj.contact_names[c] + "' has " +
-                                       std::to_string(v[c]) + " " + what + " columns, expected " +
-                                       std::to_string(present ? per : 0));
+        throw fail(header_line, 0,
+                   "contact point '" + traj.contact_names[c] + "' has " + std::to_string(v[c]) +
+                       " " + what + " columns, expected " + std::to_string(present ? per : 0));
     return present;
   };
   const bool has_cpos = uniform(cpos, 3, "position");
@@ -591,9 +604,10 @@ inline trajectory read_trajectory_csv(std::istream& is, const std::string& sourc
       a = e + 1;
     }
     if (fields.size() != cols.size())
-      throw fail(ln, 0, "expected " + std::to_string(cols.size()) + " fields, got " +
-                            std::to_string(fields.size()) +
-                            (fields.size() < cols.size() ? " (truncated line?)" : ""));
+      throw fail(ln, 0,
+                 "expected " + std::to_string(cols.size()) + " fields, got " +
+                     std::to_string(fields.size()) +
+                     (fields.size() < cols.size() ? " (truncated line?)" : ""));
     trajectory_frame fr;
     fr.q.resize(static_cast<Eigen::Index>(nq));
     if (has_v) fr.v.resize(static_cast<Eigen::Index>(nv));
@@ -615,36 +629,58 @@ inline trajectory read_trajectory_csv(std::istream& is, const std::string& sourc
         long long x = 0;
         auto r = std::from_chars(s.data(), s.data() + s.size(), x);
         if (s.empty() || r.ec != std::errc() || r.ptr != s.data() + s.size())
-          throw fail(ln, cn, "cannot read '" + std::string(s.substr(0, 40)) +
-                                 "' as an integer (column '" + names[i] + "')");
+          throw fail(ln, cn,
+                     "cannot read '" + std::string(s.substr(0, 40)) + "' as an integer (column '" +
+                         names[i] + "')");
         fr.controller_state = static_cast<int>(x);
         continue;
       }
       const double x = parse_number(fields[i], ln, cn, names[i]);
       switch (c.type) {
-        case column::kind::t: fr.t = x; break;
-        case column::kind::q: fr.q[c.index] = x; break;
-        case column::kind::v: fr.v[c.index] = x; break;
-        case column::kind::tau: fr.tau[c.index] = x; break;
-        case column::kind::obj: fr.objective_terms[c.index] = x; break;
-        case column::kind::com: fr.com[c.component] = x; break;
+        case column::kind::t:
+          fr.t = x;
+          break;
+        case column::kind::q:
+          fr.q[c.index] = x;
+          break;
+        case column::kind::v:
+          fr.v[c.index] = x;
+          break;
+        case column::kind::tau:
+          fr.tau[c.index] = x;
+          break;
+        case column::kind::obj:
+          fr.objective_terms[c.index] = x;
+          break;
+        case column::kind::com:
+          fr.com[c.component] = x;
+          break;
         case column::kind::body:
-          if (c.component < 3) fr.body_position[c.index][c.component] = x;
-          else if (c.component == 3) fr.body_orientation[c.index].w() = x;
-          else fr.body_orientation[c.index].vec()[c.component - 4] = x;
+          if (c.component < 3)
+            fr.body_position[c.index][c.component] = x;
+          else if (c.component == 3)
+            fr.body_orientation[c.index].w() = x;
+          else
+            fr.body_orientation[c.index].vec()[c.component - 4] = x;
           break;
         case column::kind::contact:
-          if (c.component < 3) fr.contact_position[c.index][c.component] = x;
-          else if (c.component < 6) fr.contact_force[c.index][c.component - 3] = x;
+          if (c.component < 3)
+            fr.contact_position[c.index][c.component] = x;
+          else if (c.component < 6)
+            fr.contact_force[c.index][c.component - 3] = x;
           else {
             if (x != 0 && x != 1)
-              throw fail(ln, cn, "'active' must be 0 or 1, got '" + std::string(fields[i]) +
-                                     "' (column '" + names[i] + "')");
+              throw fail(ln, cn,
+                         "'active' must be 0 or 1, got '" + std::string(fields[i]) + "' (column '" +
+                             names[i] + "')");
             fr.contact_active[c.index] = static_cast<unsigned char>(x);
           }
           break;
-        case column::kind::push: push_force[c.index][c.component] = x; break;
-        case column::kind::state: break;
+        case column::kind::push:
+          push_force[c.index][c.component] = x;
+          break;
+        case column::kind::state:
+          break;
       }
     }
     std::sort(pushed.begin(), pushed.end());

@@ -63,12 +63,10 @@ inline bool parse_viz_flag(int argc, char** argv, int& i, viz_outputs& out) {
     std::string_view name;
     std::string viz_outputs::*field;
   };
-  static const flag flags[] = {{"--html", &viz_outputs::html},
-                               {"--filmstrip", &viz_outputs::filmstrip_svg},
-                               {"--gait-svg", &viz_outputs::gait_svg},
-                               {"--bvh", &viz_outputs::bvh},
-                               {"--csv", &viz_outputs::trajectory_csv},
-                               {"--mjcf-replay", &viz_outputs::mjcf_replay}};
+  static const flag flags[] = {
+      {"--html", &viz_outputs::html},          {"--filmstrip", &viz_outputs::filmstrip_svg},
+      {"--gait-svg", &viz_outputs::gait_svg},  {"--bvh", &viz_outputs::bvh},
+      {"--csv", &viz_outputs::trajectory_csv}, {"--mjcf-replay", &viz_outputs::mjcf_replay}};
   for (const flag& f : flags) {
     if (a == f.name) {
       if (i + 1 >= argc || argv[i + 1][0] == '\0' ||

@@ -44,8 +44,10 @@ struct convergence_log {
     while (!s.empty() && std::isspace(static_cast<unsigned char>(s.back()))) s.pop_back();
     std::string o;
     for (char c : s) {
-      if (c == ' ' || c == '-') o += '_';
-      else o += static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+      if (c == ' ' || c == '-')
+        o += '_';
+      else
+        o += static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
     }
     return o;
   }
@@ -111,7 +113,9 @@ inline convergence_log read_convergence_csv(std::istream& is,
     if (t.empty() || t[0] == '#') continue;
     if (!have_header) {
       if (line.find(',') == std::string::npos)
-        sep = line.find(';') != std::string::npos ? ';' : (line.find('\t') != std::string::npos ? '\t' : ',');
+        sep = line.find(';') != std::string::npos
+                  ? ';'
+                  : (line.find('\t') != std::string::npos ? '\t' : ',');
       log.columns = split(line, sep);
       have_header = true;
       continue;
@@ -126,8 +130,8 @@ inline convergence_log read_convergence_csv(std::istream& is,
     for (std::size_t c = 0; c < cells.size(); ++c) {
       char* end = nullptr;
       const double v = std::strtod(cells[c].c_str(), &end);
-      row[c] = (!cells[c].empty() && end && *end == '\0') ? v
-                                                           : std::numeric_limits<double>::quiet_NaN();
+      row[c] =
+          (!cells[c].empty() && end && *end == '\0') ? v : std::numeric_limits<double>::quiet_NaN();
     }
     log.rows.push_back(std::move(row));
   }
@@ -146,9 +150,9 @@ struct convergence_plot_options {
   std::string x_column;                ///< empty: evaluations, else generation, else row number
   std::vector<std::string> y_columns;  ///< empty: best, median, mean, worst (those present)
   std::string sigma_column;            ///< empty: sigma / step_size if present; "-" for none
-  int log_y = -1;                      ///< 1 log, 0 linear, -1 auto (log when all > 0 and span > 50x)
+  int log_y = -1;  ///< 1 log, 0 linear, -1 auto (log when all > 0 and span > 50x)
   std::string title = "Optimizer convergence";
-  double width = 720, height = 300;    ///< objective panel size, px (sigma panel: height / 2)
+  double width = 720, height = 300;  ///< objective panel size, px (sigma panel: height / 2)
 };
 
 /// Draws the convergence plot. Throws std::invalid_argument naming a requested column the log lacks
@@ -162,8 +166,8 @@ inline void write_convergence_plot_svg(const convergence_log& log, std::ostream&
   for (const auto& c : log.columns) have += (have.empty() ? "" : ", ") + ("'" + c + "'");
   auto require = [&](const std::string& n) {
     const int c = log.find(n);
-    check_argument(c >= 0, "write_convergence_plot_svg: the log has no column '", n,
-                   "'; it has ", have);
+    check_argument(c >= 0, "write_convergence_plot_svg: the log has no column '", n, "'; it has ",
+                   have);
     return c;
   };
   int xc = -1;
@@ -173,17 +177,17 @@ inline void write_convergence_plot_svg(const convergence_log& log, std::ostream&
   } else {
     xc = log.find({"evaluations", "evals", "evaluation", "nevals", "n_evals", "fevals",
                    "num_evaluations", "function_evaluations"});
-    if (xc < 0) xc = log.find({"generation", "generations", "gen", "iteration", "iter", "iterations"});
+    if (xc < 0)
+      xc = log.find({"generation", "generations", "gen", "iteration", "iter", "iterations"});
   }
   if (xc >= 0) xlabel = log.columns[xc];
   std::vector<int> yc;
   if (!opt.y_columns.empty()) {
     for (const auto& n : opt.y_columns) yc.push_back(require(n));
   } else {
-    for (auto aliases : {std::initializer_list<std::string_view>{"best", "best_f", "f_best", "fbest",
-                                                                 "best_fitness", "best_cost",
-                                                                 "best_value", "best_so_far",
-                                                                 "best_ever"},
+    for (auto aliases : {std::initializer_list<std::string_view>{
+                             "best", "best_f", "f_best", "fbest", "best_fitness", "best_cost",
+                             "best_value", "best_so_far", "best_ever"},
                          std::initializer_list<std::string_view>{"median", "median_f", "f_median",
                                                                  "median_fitness", "median_cost"},
                          std::initializer_list<std::string_view>{"mean", "mean_f", "f_mean",
@@ -197,13 +201,17 @@ inline void write_convergence_plot_svg(const convergence_log& log, std::ostream&
                    have, "; name them in convergence_plot_options::y_columns");
   }
   int sc = -1;
-  if (opt.sigma_column == "-") sc = -1;
-  else if (!opt.sigma_column.empty()) sc = require(opt.sigma_column);
-  else sc = log.find({"sigma", "step_size", "stepsize", "step"});
+  if (opt.sigma_column == "-")
+    sc = -1;
+  else if (!opt.sigma_column.empty())
+    sc = require(opt.sigma_column);
+  else
+    sc = log.find({"sigma", "step_size", "stepsize", "step"});
   const int rc = log.find({"restart", "restarts", "run"});
 
   std::vector<double> x(log.rows.size());
-  for (std::size_t i = 0; i < x.size(); ++i) x[i] = xc >= 0 ? log.rows[i][xc] : static_cast<double>(i);
+  for (std::size_t i = 0; i < x.size(); ++i)
+    x[i] = xc >= 0 ? log.rows[i][xc] : static_cast<double>(i);
   double xlo = 1e300, xhi = -1e300;
   finite_range(x, xlo, xhi);
   if (xlo > xhi) {
@@ -221,9 +229,9 @@ inline void write_convergence_plot_svg(const convergence_log& log, std::ostream&
         yhi = std::max(yhi, r[c]);
         all_positive = all_positive && r[c] > 0;
       }
-  const bool log_y = opt.log_y == 1 ? (all_positive && ylo <= yhi)
-                   : opt.log_y == 0 ? false
-                                    : (all_positive && ylo <= yhi && yhi > 50 * ylo);
+  const bool log_y = opt.log_y == 1   ? (all_positive && ylo <= yhi)
+                     : opt.log_y == 0 ? false
+                                      : (all_positive && ylo <= yhi && yhi > 50 * ylo);
   if (log_y) {
     ylo = std::pow(10.0, std::floor(std::log10(ylo)));
     yhi = std::pow(10.0, std::ceil(std::log10(yhi)));

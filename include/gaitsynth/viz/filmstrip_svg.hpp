@@ -3,8 +3,8 @@
 /// Strobe filmstrip of a recorded trajectory as SVG, like the papers' figures: the character drawn
 /// in side view (orthographic projection on the x-z plane, seen from -y) at a fixed time interval,
 /// each copy at its own place along the path, earlier copies fainter. Bodies are drawn from the
-/// model's shapes (box outlines, capsules, spheres; a segment to the children or to segment_end when
-/// a body has none), far (left, +y) limbs first, with the terrain profile under the path, the
+/// model's shapes (box outlines, capsules, spheres; a segment to the children or to segment_end
+/// when a body has none), far (left, +y) limbs first, with the terrain profile under the path, the
 /// contact points that touch and the COM path. docs/viewer.md.
 #include <Eigen/Core>
 #include <algorithm>
@@ -26,13 +26,13 @@
 namespace gaitsynth {
 
 struct filmstrip_options {
-  double interval = 0.0;   ///< s between strobe frames; 0: (t_end - t_begin) / (count - 1)
-  int count = 10;          ///< strobe frames when interval == 0
+  double interval = 0.0;  ///< s between strobe frames; 0: (t_end - t_begin) / (count - 1)
+  int count = 10;         ///< strobe frames when interval == 0
   double t_begin = -std::numeric_limits<double>::infinity();  ///< s (clamped to the trajectory)
   double t_end = std::numeric_limits<double>::infinity();     ///< s
-  double spread = 0.0;     ///< extra x shift per strobe frame, m (separates frames walking in place)
-  double width = 1200;     ///< SVG width, px (height follows from the drawing's aspect ratio)
-  bool fade = true;        ///< earlier frames fainter
+  double spread = 0.0;  ///< extra x shift per strobe frame, m (separates frames walking in place)
+  double width = 1200;  ///< SVG width, px (height follows from the drawing's aspect ratio)
+  bool fade = true;     ///< earlier frames fainter
   bool show_contacts = true;  ///< touching contact points as red dots
   bool show_forces = false;   ///< contact force arrows (0.5 m per body weight)
   bool show_com_path = true;  ///< COM path as a dashed line
@@ -74,9 +74,12 @@ inline std::vector<Eigen::Vector2d> convex_hull(std::vector<Eigen::Vector2d> p) 
 
 inline const char* side_colour(body_side s) {
   switch (s) {
-    case body_side::left: return "#6f9bd8";
-    case body_side::right: return "#dd8452";
-    default: return "#a3a3a3";
+    case body_side::left:
+      return "#6f9bd8";
+    case body_side::right:
+      return "#dd8452";
+    default:
+      return "#a3a3a3";
   }
 }
 
@@ -97,9 +100,9 @@ void write_filmstrip_svg(const model<Root>& m, const trajectory& traj, std::ostr
   check_positive(opt.width, "write_filmstrip_svg: width");
   const double ta = std::max(opt.t_begin, traj.frames.front().t);
   const double tb = std::min(opt.t_end, traj.frames.back().t);
-  check_argument(ta <= tb, "write_filmstrip_svg: empty time window [", opt.t_begin, ", ",
-                 opt.t_end, "] s for a trajectory over [", traj.frames.front().t, ", ",
-                 traj.frames.back().t, "] s");
+  check_argument(ta <= tb, "write_filmstrip_svg: empty time window [", opt.t_begin, ", ", opt.t_end,
+                 "] s for a trajectory over [", traj.frames.front().t, ", ", traj.frames.back().t,
+                 "] s");
   // Strobe times.
   std::vector<int> strobe;
   const double step =
@@ -162,7 +165,12 @@ void write_filmstrip_svg(const model<Root>& m, const trajectory& traj, std::ostr
   const double H = (zmax - zmin) * scale + title_h + times_h;
   auto X = [&](double x) { return (x - xmin) * scale; };
   auto Z = [&](double z) { return title_h + (zmax - z) * scale; };
-  auto pt = [&](double x, double z) { return fnum(X(x), 1) + "," + fnum(Z(z), 1); };
+  auto pt = [&](double x, double z) {
+    std::string s = fnum(X(x), 1);
+    s += ',';
+    s += fnum(Z(z), 1);
+    return s;
+  };
 
   svg_open(os, opt.width, H, opt.title.empty() ? m.name + " filmstrip" : opt.title);
   if (!opt.title.empty())
@@ -193,9 +201,9 @@ void write_filmstrip_svg(const model<Root>& m, const trajectory& traj, std::ostr
   const double px_per_m = scale;
   for (std::size_t k = 0; k < strobe.size(); ++k) {
     const trajectory_frame& fr = traj.frames[strobe[k]];
-    const double opacity =
-        opt.fade && strobe.size() > 1 ? 0.3 + 0.7 * static_cast<double>(k) / (strobe.size() - 1)
-                                      : 1.0;
+    const double opacity = opt.fade && strobe.size() > 1
+                               ? 0.3 + 0.7 * static_cast<double>(k) / (strobe.size() - 1)
+                               : 1.0;
     std::vector<film_item> items;
     int order = 0;
     for (int i = 0; i < nb; ++i) {
@@ -212,10 +220,10 @@ void write_filmstrip_svg(const model<Root>& m, const trajectory& traj, std::ostr
         if (sh.type == shape::kind::box) {
           std::vector<Eigen::Vector2d> corners;
           for (int c = 0; c < 8; ++c) {
-            const Eigen::Vector3d w =
-                W(sh.center + Eigen::Vector3d((c & 1) ? sh.half_extents.x() : -sh.half_extents.x(),
-                                              (c & 2) ? sh.half_extents.y() : -sh.half_extents.y(),
-                                              (c & 4) ? sh.half_extents.z() : -sh.half_extents.z()));
+            const Eigen::Vector3d w = W(
+                sh.center + Eigen::Vector3d((c & 1) ? sh.half_extents.x() : -sh.half_extents.x(),
+                                            (c & 2) ? sh.half_extents.y() : -sh.half_extents.y(),
+                                            (c & 4) ? sh.half_extents.z() : -sh.half_extents.z()));
             corners.emplace_back(w.x(), w.z());
           }
           s << "<polygon fill=\"" << col << "\" stroke=\"#333\" stroke-width=\"1\" points=\"";
@@ -225,14 +233,14 @@ void write_filmstrip_svg(const model<Root>& m, const trajectory& traj, std::ostr
           const Eigen::Vector3d a = W(sh.p0), e = W(sh.p1);
           const double w = 2 * sh.radius * px_per_m;
           for (int pass = 0; pass < 2; ++pass)
-            s << "<line x1=\"" << fnum(X(a.x()), 1) << "\" y1=\"" << fnum(Z(a.z()), 1)
-              << "\" x2=\"" << fnum(X(e.x()), 1) << "\" y2=\"" << fnum(Z(e.z()), 1)
-              << "\" stroke=\"" << (pass == 0 ? "#333" : col) << "\" stroke-width=\""
+            s << "<line x1=\"" << fnum(X(a.x()), 1) << "\" y1=\"" << fnum(Z(a.z()), 1) << "\" x2=\""
+              << fnum(X(e.x()), 1) << "\" y2=\"" << fnum(Z(e.z()), 1) << "\" stroke=\""
+              << (pass == 0 ? "#333" : col) << "\" stroke-width=\""
               << fnum(pass == 0 ? w + 2 : w, 1) << "\" stroke-linecap=\"round\"/>";
         } else {
           const Eigen::Vector3d c = W(sh.center);
-          s << "<circle cx=\"" << fnum(X(c.x()), 1) << "\" cy=\"" << fnum(Z(c.z()), 1)
-            << "\" r=\"" << fnum(sh.radius * px_per_m, 1) << "\" fill=\"" << col
+          s << "<circle cx=\"" << fnum(X(c.x()), 1) << "\" cy=\"" << fnum(Z(c.z()), 1) << "\" r=\""
+            << fnum(sh.radius * px_per_m, 1) << "\" fill=\"" << col
             << "\" stroke=\"#333\" stroke-width=\"1\"/>";
         }
       }
@@ -244,13 +252,13 @@ void write_filmstrip_svg(const model<Root>& m, const trajectory& traj, std::ostr
         const Eigen::Vector3d a = P[k][i];
         for (const auto& l : ends) {
           const Eigen::Vector3d e = W(l);
-          s << "<line x1=\"" << fnum(X(a.x()), 1) << "\" y1=\"" << fnum(Z(a.z()), 1)
-            << "\" x2=\"" << fnum(X(e.x()), 1) << "\" y2=\"" << fnum(Z(e.z()), 1)
-            << "\" stroke=\"" << col << "\" stroke-width=\"" << fnum(std::max(2.0, 0.03 * px_per_m), 1)
+          s << "<line x1=\"" << fnum(X(a.x()), 1) << "\" y1=\"" << fnum(Z(a.z()), 1) << "\" x2=\""
+            << fnum(X(e.x()), 1) << "\" y2=\"" << fnum(Z(e.z()), 1) << "\" stroke=\"" << col
+            << "\" stroke-width=\"" << fnum(std::max(2.0, 0.03 * px_per_m), 1)
             << "\" stroke-linecap=\"round\"/>";
         }
-        s << "<circle cx=\"" << fnum(X(a.x()), 1) << "\" cy=\"" << fnum(Z(a.z()), 1)
-          << "\" r=\"" << fnum(std::max(1.5, 0.015 * px_per_m), 1) << "\" fill=\"#333\"/>";
+        s << "<circle cx=\"" << fnum(X(a.x()), 1) << "\" cy=\"" << fnum(Z(a.z()), 1) << "\" r=\""
+          << fnum(std::max(1.5, 0.015 * px_per_m), 1) << "\" fill=\"#333\"/>";
       }
       items.push_back({depth, order++, s.str()});
     }
@@ -270,9 +278,9 @@ void write_filmstrip_svg(const model<Root>& m, const trajectory& traj, std::ostr
              << fnum(Z(p.z()), 1) << "\" r=\"3\" fill=\"#d62728\"/>\n";
         if (opt.show_forces && c < fr.contact_force.size()) {
           const Eigen::Vector3d e = p + force_scale * fr.contact_force[c];
-          os << "<line class=\"force\" x1=\"" << fnum(X(p.x()), 1) << "\" y1=\"" << fnum(Z(p.z()), 1)
-             << "\" x2=\"" << fnum(X(e.x()), 1) << "\" y2=\"" << fnum(Z(e.z()), 1)
-             << "\" stroke=\"#2ca02c\" stroke-width=\"1.5\"/>\n";
+          os << "<line class=\"force\" x1=\"" << fnum(X(p.x()), 1) << "\" y1=\""
+             << fnum(Z(p.z()), 1) << "\" x2=\"" << fnum(X(e.x()), 1) << "\" y2=\""
+             << fnum(Z(e.z()), 1) << "\" stroke=\"#2ca02c\" stroke-width=\"1.5\"/>\n";
         }
       }
     }

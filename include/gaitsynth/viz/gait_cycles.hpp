@@ -55,12 +55,12 @@ struct gait_cycle_options {
 /// Curves of every channel over every complete gait cycle, their mean and standard deviation.
 struct gait_cycle_data {
   std::vector<gait_channel> channels;
-  std::string foot;                 ///< body whose strikes define the cycles ("" if given)
+  std::string foot;                  ///< body whose strikes define the cycles ("" if given)
   std::vector<double> cycle_starts;  ///< s; cycle k spans [cycle_starts[k], cycle_starts[k+1]]
   std::vector<double> percent;       ///< 0 .. 100
   std::vector<std::vector<std::vector<double>>> curves;  ///< [channel][cycle][sample]
-  std::vector<std::vector<double>> mean;     ///< [channel][sample]
-  std::vector<std::vector<double>> stddev;   ///< [channel][sample], sample s.d. (n - 1), 0 if n = 1
+  std::vector<std::vector<double>> mean;                 ///< [channel][sample]
+  std::vector<std::vector<double>> stddev;  ///< [channel][sample], sample s.d. (n - 1), 0 if n = 1
   int num_cycles() const {
     return cycle_starts.size() < 2 ? 0 : static_cast<int>(cycle_starts.size()) - 1;
   }
@@ -161,8 +161,7 @@ std::vector<double> channel_series(const model<Root>& m, const trajectory& traj,
   std::vector<double> out(traj.frames.size());
   if (c.type == gait_channel::kind::joint_angle) {
     const int j = m.dof_index(c.name);
-    for (std::size_t f = 0; f < traj.frames.size(); ++f)
-      out[f] = traj.frames[f].q[Root::nq + j];
+    for (std::size_t f = 0; f < traj.frames.size(); ++f) out[f] = traj.frames[f].q[Root::nq + j];
   } else {
     const int b = m.body_index(c.name);
     const int r = c.type == gait_channel::kind::relative_pitch ? m.body_index(c.reference) : -1;
@@ -195,8 +194,8 @@ inline double interpolate_at(const trajectory& traj, const std::vector<double>& 
 }  // namespace viz_detail
 
 /// Gait-cycle curves of the trajectory (see gait_cycle_data). Throws std::invalid_argument for an
-/// unknown DOF / body / foot name or bad options; a trajectory with fewer than two heel strikes gives
-/// num_cycles() == 0 (not an error: a fall is worth plotting too).
+/// unknown DOF / body / foot name or bad options; a trajectory with fewer than two heel strikes
+/// gives num_cycles() == 0 (not an error: a fall is worth plotting too).
 template <root_joint Root>
 gait_cycle_data gait_cycles(const model<Root>& m, const trajectory& traj,
                             const gait_cycle_options& opt = {}) {

@@ -15,11 +15,11 @@
 namespace gaitsynth {
 
 struct gait_plot_options {
-  gait_cycle_options cycles;   ///< channels, side, foot, cycle starts
-  bool show_cycles = true;     ///< every cycle as a thin grey curve under the mean
-  std::string title;           ///< empty: "<model>: gait cycles"
-  double panel_width = 300;    ///< px
-  double panel_height = 220;   ///< px
+  gait_cycle_options cycles;  ///< channels, side, foot, cycle starts
+  bool show_cycles = true;    ///< every cycle as a thin grey curve under the mean
+  std::string title;          ///< empty: "<model>: gait cycles"
+  double panel_width = 300;   ///< px
+  double panel_height = 220;  ///< px
 };
 
 /// Draws an already computed gait_cycle_data (lets callers reuse or inspect the numbers).
@@ -34,7 +34,8 @@ inline void write_gait_plot_svg(const gait_cycle_data& d, std::ostream& os,
   const double H = mt + opt.panel_height + mb;
   const std::string title = opt.title.empty() ? model_name + ": gait cycles" : opt.title;
   svg_open(os, W, H, title);
-  os << "<text x=\"" << fnum(W / 2) << "\" y=\"20\" text-anchor=\"middle\" font-family=\"sans-serif\""
+  os << "<text x=\"" << fnum(W / 2)
+     << "\" y=\"20\" text-anchor=\"middle\" font-family=\"sans-serif\""
      << " font-size=\"15\" font-weight=\"bold\">" << xml_escape(title) << "</text>\n";
   const int n = d.num_cycles();
   for (std::size_t c = 0; c < nch; ++c) {
@@ -81,7 +82,8 @@ inline void write_gait_plot_svg(const gait_cycle_data& d, std::ostream& os,
   std::string note;
   if (n > 0) {
     note = "mean (solid) and +-1 s.d. (band) over " + std::to_string(n) + " cycle" +
-           (n == 1 ? "" : "s") + (d.foot.empty() ? " (given starts)" : " between heel strikes of " + d.foot);
+           (n == 1 ? "" : "s") +
+           (d.foot.empty() ? " (given starts)" : " between heel strikes of " + d.foot);
   } else {
     note = "fewer than two heel strikes" + (d.foot.empty() ? std::string() : " of " + d.foot) +
            " found (" + std::to_string(d.cycle_starts.size()) + ")";

@@ -36,13 +36,13 @@
 namespace gaitsynth {
 
 struct html_player_options {
-  std::string title;              ///< page title; empty: "<model> - gaitsynth player"
-  double max_frame_rate = 60.0;   ///< frames kept per second of motion (the nearest recorded ones)
-  double force_scale = 0.0;       ///< arrow length per force, m/N; 0: 0.5 m per body weight
+  std::string title;             ///< page title; empty: "<model> - gaitsynth player"
+  double max_frame_rate = 60.0;  ///< frames kept per second of motion (the nearest recorded ones)
+  double force_scale = 0.0;      ///< arrow length per force, m/N; 0: 0.5 m per body weight
   bool autoplay = true;
-  double speed = 1.0;             ///< initial playback speed
+  double speed = 1.0;                    ///< initial playback speed
   std::vector<std::string> plot_joints;  ///< joints shown at first; empty: sagittal hip/knee/ankle
-  gait_cycle_options cycles;      ///< heel-strike detection for the gait-cycle plot (side, foot)
+  gait_cycle_options cycles;  ///< heel-strike detection for the gait-cycle plot (side, foot)
 };
 
 namespace viz_detail {
@@ -164,7 +164,7 @@ var cam = {
   az: D.planar ? -Math.PI / 2 : -Math.PI / 2 + 0.7,
   el: D.planar ? 0.05 : 0.28,
   dist: Math.max(1.2, D.size * 2.6),
-  target: [D.com[0], D.com[1], D.com[2]],
+  target: [D.cm[0], D.cm[1], D.cm[2]],
   ortho: !!D.planar,
   fov: 40 * Math.PI / 180
 };
@@ -597,13 +597,16 @@ inline std::string shapes_json(const body& b, const std::vector<Eigen::Vector3d>
     if (sh.type == shape::kind::box)
       s += "{\"k\":\"box\",\"c\":" + v3(sh.center) + ",\"h\":" + v3(sh.half_extents) + "}";
     else if (sh.type == shape::kind::capsule)
-      s += "{\"k\":\"cap\",\"a\":" + v3(sh.p0) + ",\"b\":" + v3(sh.p1) + ",\"r\":" + jnum(sh.radius) +
-           "}";
+      s += "{\"k\":\"cap\",\"a\":" + v3(sh.p0) + ",\"b\":" + v3(sh.p1) +
+           ",\"r\":" + jnum(sh.radius) + "}";
     else
       s += "{\"k\":\"sph\",\"c\":" + v3(sh.center) + ",\"r\":" + jnum(sh.radius) + "}";
   }
   s += "],\"ends\":[";
-  for (std::size_t k = 0; k < ends.size(); ++k) s += (k ? "," : "") + v3(ends[k]);
+  for (std::size_t k = 0; k < ends.size(); ++k) {
+    if (k) s += ',';
+    s += v3(ends[k]);
+  }
   return s + "]";
 }
 
@@ -624,12 +627,16 @@ void write_html_player(const model<Root>& m, const trajectory& traj, std::ostrea
   const int nb = m.num_bodies();
   const int nc = static_cast<int>(m.contact_points.size());
   const int nj = m.num_joint_dofs();
-  // Frames kept: at most max_frame_rate per second of motion, always the first and last.
+  // Frames kept: the recorded frame nearest to each tick of a max_frame_rate clock (each once),
+  // and always the last one.
   std::vector<int> keep;
-  const double min_dt = 1.0 / opt.max_frame_rate;
-  for (std::size_t f = 0; f < traj.frames.size(); ++f)
-    if (keep.empty() || traj.frames[f].t - traj.frames[keep.back()].t >= min_dt - 1e-12)
-      keep.push_back(static_cast<int>(f));
+  const double t0 = traj.frames.front().t, t1 = traj.frames.back().t;
+  for (long k = 0; k <= 100000000; ++k) {
+    const double t = t0 + k / opt.max_frame_rate;
+    if (t > t1 + 1e-9) break;
+    const int f = nearest_frame(traj, t);
+    if (keep.empty() || f > keep.back()) keep.push_back(f);
+  }
   if (keep.back() != static_cast<int>(traj.frames.size()) - 1)
     keep.push_back(static_cast<int>(traj.frames.size()) - 1);
   const int nf = static_cast<int>(keep.size());
@@ -652,8 +659,10 @@ void write_html_player(const model<Root>& m, const trajectory& traj, std::ostrea
     for (const auto& c : m.contact_points) names_only.contact_bodies.push_back(c.body);
   }
   int foot = -1;
-  if (!opt.cycles.foot.empty()) foot = m.body_index(opt.cycles.foot);
-  else foot = default_foot_body(names_only, opt.cycles.side);
+  if (!opt.cycles.foot.empty())
+    foot = m.body_index(opt.cycles.foot);
+  else
+    foot = default_foot_body(names_only, opt.cycles.side);
   std::vector<double> cycles = opt.cycles.cycle_starts;
   if (cycles.empty() && foot >= 0) {
     names_only.frames.reserve(traj.frames.size());
@@ -699,8 +708,10 @@ void write_html_player(const model<Root>& m, const trajectory& traj, std::ostrea
 
   std::string d;
   d.reserve(static_cast<std::size_t>(nf) * (nb * 7 + nc * 7 + nj + 8) * 9 + 4096);
-  d += "{\"name\":" + json_string(m.name) + ",\"planar\":" + (traj.planar || Root::nq == 3 ? "true" : "false");
-  d += ",\"autoplay\":" + std::string(opt.autoplay ? "true" : "false") + ",\"speed\":" + jnum(opt.speed);
+  d += "{\"name\":" + json_string(m.name) +
+       ",\"planar\":" + (traj.planar || Root::nq == 3 ? "true" : "false");
+  d += ",\"autoplay\":" + std::string(opt.autoplay ? "true" : "false") +
+       ",\"speed\":" + jnum(opt.speed);
   d += ",\"size\":" + jnum(size, 4) + ",\"force_scale\":" + jnum(force_scale, 4);
   d += ",\"bodies\":[";
   for (int i = 0; i < nb; ++i) {
@@ -712,32 +723,50 @@ void write_html_player(const model<Root>& m, const trajectory& traj, std::ostrea
       for (int c = i + 1; c < nb; ++c)
         if (m.bodies[c].parent == i) ends.push_back(m.bodies[c].joint_offset);
     }
-    d += std::string(i ? "," : "") + "{\"n\":" + json_string(b.name) + ",\"p\":" +
-         std::to_string(b.parent) + ",\"side\":\"" +
-         (s == body_side::left ? "l" : s == body_side::right ? "r" : "c") + "\"," +
-         shapes_json(b, ends) + "}";
+    d += std::string(i ? "," : "") + "{\"n\":" + json_string(b.name) +
+         ",\"p\":" + std::to_string(b.parent) + ",\"side\":\"" +
+         (s == body_side::left    ? "l"
+          : s == body_side::right ? "r"
+                                  : "c") +
+         "\"," + shapes_json(b, ends) + "}";
   }
   d += "],\"contacts\":[";
   for (int k = 0; k < nc; ++k)
     d += std::string(k ? "," : "") + "{\"n\":" + json_string(m.contact_points[k].name) +
          ",\"b\":" + std::to_string(m.contact_points[k].body) + "}";
   d += "],\"joint_names\":[";
-  for (int j = 0; j < nj; ++j) d += (j ? "," : "") + json_string(m.dofs[j].name);
+  for (int j = 0; j < nj; ++j) {
+    if (j) d += ',';
+    d += json_string(m.dofs[j].name);
+  }
   d += "],\"plot_joints\":[";
-  for (std::size_t k = 0; k < plot.size(); ++k) d += (k ? "," : "") + std::to_string(plot[k]);
+  for (std::size_t k = 0; k < plot.size(); ++k) {
+    if (k) d += ',';
+    d += std::to_string(plot[k]);
+  }
   const std::size_t no = traj.objective_term_names.size();
   d += "],\"obj_names\":[";
-  for (std::size_t k = 0; k < no; ++k) d += (k ? "," : "") + json_string(traj.objective_term_names[k]);
-  d += "],\"foot\":" + json_string(foot >= 0 ? m.bodies[foot].name : std::string()) + ",\"cycles\":[";
-  for (std::size_t k = 0; k < cycles.size(); ++k) d += (k ? "," : "") + jnum(cycles[k], 8);
+  for (std::size_t k = 0; k < no; ++k) {
+    if (k) d += ',';
+    d += json_string(traj.objective_term_names[k]);
+  }
+  d += "],\"foot\":" + json_string(foot >= 0 ? m.bodies[foot].name : std::string()) +
+       ",\"cycles\":[";
+  for (std::size_t k = 0; k < cycles.size(); ++k) {
+    if (k) d += ',';
+    d += jnum(cycles[k], 8);
+  }
   const terrain_samples& ts = traj.terrain;
-  const bool has_terrain = ts.nx > 0 && ts.ny > 0 &&
-                           ts.height.size() == static_cast<std::size_t>(ts.nx) * ts.ny;
+  const bool has_terrain =
+      ts.nx > 0 && ts.ny > 0 && ts.height.size() == static_cast<std::size_t>(ts.nx) * ts.ny;
   d += "],\"terrain\":{\"nx\":" + std::to_string(has_terrain ? ts.nx : 0) +
        ",\"ny\":" + std::to_string(has_terrain ? ts.ny : 0) + ",\"x0\":" + jnum(ts.x0) +
        ",\"y0\":" + jnum(ts.y0) + ",\"dx\":" + jnum(ts.dx) + ",\"dy\":" + jnum(ts.dy) + ",\"h\":[";
   if (has_terrain)
-    for (std::size_t k = 0; k < ts.height.size(); ++k) d += (k ? "," : "") + jnum(ts.height[k], 5);
+    for (std::size_t k = 0; k < ts.height.size(); ++k) {
+      if (k) d += ',';
+      d += jnum(ts.height[k], 5);
+    }
   d += "]}";
   // Per-frame arrays, flattened.
   auto list = [&](const char* key, auto&& per_frame) {
@@ -760,13 +789,19 @@ void write_html_player(const model<Root>& m, const trajectory& traj, std::ostrea
   d += ",\"bp\":[";
   for (int k = 0; k < nf; ++k)
     for (int i = 0; i < nb; ++i)
-      for (int c = 0; c < 3; ++c) d += ((k || i || c) ? "," : "") + jnum(poses_p[k][i][c], 6);
+      for (int c = 0; c < 3; ++c) {
+        if (k || i || c) d += ',';
+        d += jnum(poses_p[k][i][c], 6);
+      }
   d += "],\"bq\":[";
   for (int k = 0; k < nf; ++k)
     for (int i = 0; i < nb; ++i) {
       const Eigen::Quaterniond& r = poses_r[k][i];
       const double q4[4] = {r.w(), r.x(), r.y(), r.z()};
-      for (int c = 0; c < 4; ++c) d += ((k || i || c) ? "," : "") + jnum(q4[c], 5);
+      for (int c = 0; c < 4; ++c) {
+        if (k || i || c) d += ',';
+        d += jnum(q4[c], 5);
+      }
     }
   d += "]";
   // COM: recorded, or the mean of the body origins when a hand-made frame left it at zero.
@@ -799,11 +834,12 @@ void write_html_player(const model<Root>& m, const trajectory& traj, std::ostrea
     for (int k = 0; k < nc; ++k)
       for (int c = 0; c < 3; ++c)
         put(first, static_cast<int>(fr.contact_force.size()) == nc ? jnum(fr.contact_force[k][c], 4)
-                                                                    : std::string("0"));
+                                                                   : std::string("0"));
   });
   list("ca", [&](const trajectory_frame& fr, bool& first) {
     for (int k = 0; k < nc; ++k)
-      put(first, static_cast<int>(fr.contact_active.size()) == nc && fr.contact_active[k] ? "1" : "0");
+      put(first,
+          static_cast<int>(fr.contact_active.size()) == nc && fr.contact_active[k] ? "1" : "0");
   });
   list("pushes", [&](const trajectory_frame& fr, bool& first) {
     std::string s = "[";
@@ -811,7 +847,8 @@ void write_html_player(const model<Root>& m, const trajectory& traj, std::ostrea
       const auto& pu = fr.pushes[k];
       if (pu.first < 0 || pu.first >= nb) continue;
       s += std::string(s.size() > 1 ? "," : "") + "[" + std::to_string(pu.first) + "," +
-           jnum(pu.second.x(), 4) + "," + jnum(pu.second.y(), 4) + "," + jnum(pu.second.z(), 4) + "]";
+           jnum(pu.second.x(), 4) + "," + jnum(pu.second.y(), 4) + "," + jnum(pu.second.z(), 4) +
+           "]";
     }
     put(first, s + "]");
   });
@@ -820,18 +857,21 @@ void write_html_player(const model<Root>& m, const trajectory& traj, std::ostrea
   });
   list("obj", [&](const trajectory_frame& fr, bool& first) {
     for (std::size_t k = 0; k < no; ++k)
-      put(first, k < fr.objective_terms.size() ? jnum(fr.objective_terms[k], 5) : std::string("null"));
+      put(first,
+          k < fr.objective_terms.size() ? jnum(fr.objective_terms[k], 5) : std::string("null"));
   });
-  list("cs", [&](const trajectory_frame& fr, bool& first) { put(first, std::to_string(fr.controller_state)); });
+  list("cs", [&](const trajectory_frame& fr, bool& first) {
+    put(first, std::to_string(fr.controller_state));
+  });
   d += "}";
 
   const std::string title = opt.title.empty() ? m.name + " - gaitsynth player" : opt.title;
   os << "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n"
      << "<meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">\n"
      << "<title>" << xml_escape(title) << "</title>\n<style>" << player_css() << "</style>\n"
-     << "</head>\n<body>\n<header><h1>" << xml_escape(title) << "</h1><span>"
-     << xml_escape(m.name) << ", " << nb << " bodies, " << nj << " joint DOFs, " << nc
-     << " contact points, " << fnum(traj.duration(), 3) << " s, " << nf << " frames"
+     << "</head>\n<body>\n<header><h1>" << xml_escape(title) << "</h1><span>" << xml_escape(m.name)
+     << ", " << nb << " bodies, " << nj << " joint DOFs, " << nc << " contact points, "
+     << fnum(traj.duration(), 3) << " s, " << nf << " frames"
      << "</span><span>drag: orbit, wheel: zoom, space: play/pause, arrows: step</span></header>"
      << player_body() << "<script id=\"gaitsynth-data\" type=\"application/json\">" << d
      << "</script>\n<script>" << player_script_a() << player_script_b() << "</script>\n"

@@ -51,8 +51,8 @@ std::vector<std::string> v_coordinate_names(const model<Root>& m) {
 }
 
 /// World poses of every body for the configuration q (size nq), by the rule of model.hpp:
-/// R_i = R_parent * R(a_1, q_1) * ... (the body's DOFs in order), p_i = p_parent + R_parent * offset.
-/// The root pose comes from the root joint (planar: (x, 0, z) and pitch about +y; floating:
+/// R_i = R_parent * R(a_1, q_1) * ... (the body's DOFs in order), p_i = p_parent + R_parent *
+/// offset. The root pose comes from the root joint (planar: (x, 0, z) and pitch about +y; floating:
 /// position and unit quaternion w, x, y, z; fixed: the root body's joint_offset, no rotation).
 template <root_joint Root>
 void compute_body_poses(const model<Root>& m, const Eigen::VectorXd& q,
@@ -133,8 +133,8 @@ void fill_missing_kinematics(const model<Root>& m, trajectory& traj) {
     if (fr.tau.size() == 0) fr.tau = Eigen::VectorXd::Zero(m.nv());
     if (fr.com.isZero(0.0) && mass > 0) {  // a recorded COM is never exactly 0
       Eigen::Vector3d c = Eigen::Vector3d::Zero();
-      for (int i = 0; i < nb; ++i) c += m.bodies[i].mass * (fr.body_position[i] +
-                                                            fr.body_orientation[i] * m.bodies[i].com);
+      for (int i = 0; i < nb; ++i)
+        c += m.bodies[i].mass * (fr.body_position[i] + fr.body_orientation[i] * m.bodies[i].com);
       fr.com = c / mass;
     }
     if (static_cast<int>(fr.contact_position.size()) != nc) {
@@ -161,8 +161,8 @@ enum class body_side { left, centre, right };
 /// "r..."/"right..." is right); a body that mirrors to itself is central.
 template <root_joint Root>
 body_side side_of_body(const model<Root>& m, int i) {
-  const bool paired = static_cast<int>(m.mirror_body.size()) == m.num_bodies() &&
-                      m.mirror_body[i] != i;
+  const bool paired =
+      static_cast<int>(m.mirror_body.size()) == m.num_bodies() && m.mirror_body[i] != i;
   if (!paired) return body_side::centre;
   const std::string& n = m.bodies[i].name;
   if (!n.empty() && (n[0] == 'r' || n[0] == 'R')) return body_side::right;
@@ -265,9 +265,10 @@ void body_points(const model<Root>& m, int i, std::vector<Eigen::Vector3d>& loca
   for (const shape& s : b.shapes) {
     if (s.type == shape::kind::box) {
       for (int c = 0; c < 8; ++c)
-        local.push_back(s.center + Eigen::Vector3d((c & 1) ? s.half_extents.x() : -s.half_extents.x(),
-                                                   (c & 2) ? s.half_extents.y() : -s.half_extents.y(),
-                                                   (c & 4) ? s.half_extents.z() : -s.half_extents.z()));
+        local.push_back(s.center +
+                        Eigen::Vector3d((c & 1) ? s.half_extents.x() : -s.half_extents.x(),
+                                        (c & 2) ? s.half_extents.y() : -s.half_extents.y(),
+                                        (c & 4) ? s.half_extents.z() : -s.half_extents.z()));
     } else if (s.type == shape::kind::capsule) {
       local.push_back(s.p0);
       local.push_back(s.p1);

@@ -47,15 +47,27 @@ inline std::string xml_escape(std::string_view s) {
   o.reserve(s.size());
   for (char c : s) {
     switch (c) {
-      case '&': o += "&amp;"; break;
-      case '<': o += "&lt;"; break;
-      case '>': o += "&gt;"; break;
-      case '"': o += "&quot;"; break;
-      case '\'': o += "&apos;"; break;
+      case '&':
+        o += "&amp;";
+        break;
+      case '<':
+        o += "&lt;";
+        break;
+      case '>':
+        o += "&gt;";
+        break;
+      case '"':
+        o += "&quot;";
+        break;
+      case '\'':
+        o += "&apos;";
+        break;
       default:
         // Control characters other than tab/newline are not allowed in XML 1.0.
-        if (static_cast<unsigned char>(c) < 0x20 && c != '\t' && c != '\n') o += ' ';
-        else o += c;
+        if (static_cast<unsigned char>(c) < 0x20 && c != '\t' && c != '\n')
+          o += ' ';
+        else
+          o += c;
     }
   }
   return o;
@@ -67,9 +79,12 @@ inline std::string json_string(std::string_view s) {
   std::string o = "\"";
   for (char c : s) {
     const auto u = static_cast<unsigned char>(c);
-    if (c == '"') o += "\\\"";
-    else if (c == '\\') o += "\\\\";
-    else if (c == '\n') o += "\\n";
+    if (c == '"')
+      o += "\\\"";
+    else if (c == '\\')
+      o += "\\\\";
+    else if (c == '\n')
+      o += "\\n";
     else if (c == '<' || c == '>' || c == '&' || u < 0x20) {
       char buf[8];
       std::snprintf(buf, sizeof buf, "\\u%04x", u);
@@ -94,7 +109,8 @@ inline std::vector<double> nice_ticks(double lo, double hi, int target = 5) {
       break;
     }
   const double first = std::ceil(lo / step - 1e-9) * step;
-  for (double v = first; v <= hi + 1e-9 * step; v += step) t.push_back(std::abs(v) < 1e-12 * step ? 0.0 : v);
+  for (double v = first; v <= hi + 1e-9 * step; v += step)
+    t.push_back(std::abs(v) < 1e-12 * step ? 0.0 : v);
   return t;
 }
 
@@ -184,8 +200,8 @@ struct plot_panel {
       } else {
         label = fnum(v, yd);
       }
-      os << "<text x=\"" << fnum(left - 4) << "\" y=\"" << fnum(py + 4)
-         << "\" text-anchor=\"end\">" << label << "</text>\n";
+      os << "<text x=\"" << fnum(left - 4) << "\" y=\"" << fnum(py + 4) << "\" text-anchor=\"end\">"
+         << label << "</text>\n";
     }
     if (!xlabel.empty())
       os << "<text x=\"" << fnum(left + width / 2) << "\" y=\"" << fnum(top + height + 30)
@@ -195,8 +211,8 @@ struct plot_panel {
          << ") rotate(-90)\" text-anchor=\"middle\">" << xml_escape(ylabel) << "</text>\n";
     if (!title.empty())
       os << "<text x=\"" << fnum(left + width / 2) << "\" y=\"" << fnum(top - 8)
-         << "\" text-anchor=\"middle\" font-size=\"13\" font-weight=\"bold\">"
-         << xml_escape(title) << "</text>\n";
+         << "\" text-anchor=\"middle\" font-size=\"13\" font-weight=\"bold\">" << xml_escape(title)
+         << "</text>\n";
     os << "</g>\n";
   }
 
@@ -227,13 +243,15 @@ struct plot_panel {
 inline void svg_open(std::ostream& os, double width, double height, std::string_view title) {
   os << "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
      << "<svg xmlns=\"http://www.w3.org/2000/svg\" version=\"1.1\" width=\"" << fnum(width)
-     << "\" height=\"" << fnum(height) << "\" viewBox=\"0 0 " << fnum(width) << " "
-     << fnum(height) << "\">\n";
+     << "\" height=\"" << fnum(height) << "\" viewBox=\"0 0 " << fnum(width) << " " << fnum(height)
+     << "\">\n";
   if (!title.empty()) os << "<title>" << xml_escape(title) << "</title>\n";
   os << "<rect width=\"100%\" height=\"100%\" fill=\"#fff\"/>\n";
 }
 
-inline void svg_close(std::ostream& os) { os << "</svg>\n"; }
+inline void svg_close(std::ostream& os) {
+  os << "</svg>\n";
+}
 
 /// A qualitative palette for curves (colour-blind friendly "Okabe-Ito" order).
 inline const char* palette(std::size_t i) {

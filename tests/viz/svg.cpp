@@ -1,0 +1,141 @@
+// SVG outputs: filmstrip, gait-cycle plot and convergence plot are well-formed XML with the
+// expected structure; the convergence reader is tolerant of column order and extra columns.
+#include <catch2/catch.hpp>
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+#include "gaitsynth/viz/convergence_plot_svg.hpp"
+#include "gaitsynth/viz/filmstrip_svg.hpp"
+#include "gaitsynth/viz/gait_plot_svg.hpp"
+#include "viz/viz_fixture.hpp"
+#include "viz/xml_check.hpp"
+
+using namespace gaitsynth;
+
+namespace {
+std::size_t count(const std::string& s, const std::string& what) {
+  std::size_t n = 0;
+  for (std::size_t p = s.find(what); p != std::string::npos; p = s.find(what, p + 1)) ++n;
+  return n;
+}
+// Outputs kept in the build tree for a look (docs/viewer.md shows copies).
+std::string out_dir() {
+  const std::string d = std::string(GAITSYNTH_BINARY_DIR) + "/viz_outputs";
+  std::filesystem::create_directories(d);
+  return d;
+}
+}  // namespace
+
+TEST_CASE("the XML checker rejects broken documents", "[viz][svg]") {
+  CHECK_NOTHROW(
+      viz_test::check_xml("<?xml version=\"1.0\"?>\n<svg a=\"1\"><g><rect/></g></svg>\n"));
+  CHECK_THROWS(viz_test::check_xml("<svg><g></svg>"));
+  CHECK_THROWS(viz_test::check_xml("<svg a=1/>"));
+  CHECK_THROWS(viz_test::check_xml("<svg>&nbsp;</svg>"));
+  CHECK_THROWS(viz_test::check_xml("<svg/><svg/>"));
+  CHECK_THROWS(viz_test::check_xml("<svg>"));
+}
+
+TEST_CASE("filmstrip SVG: well-formed, one group per strobe frame", "[viz][svg]") {
+  const auto m = viz_test::make_biped<planar_root>();
+  const auto traj = viz_test::make_walk(m, 3.0, 0.01);
+  std::ostringstream os;
+  write_filmstrip_svg(m, traj, os, {.interval = 0.25, .title = "test <biped> & walk"});
+  const std::string svg = os.str();
+  const auto sum = viz_test::check_xml(svg);
+  CHECK(sum.root == "svg");
+  CHECK(svg.find("xmlns=\"http://www.w3.org/2000/svg\"") != std::string::npos);
+  CHECK(count(svg, "class=\"strobe\"") == 13);  // t = 0, 0.25, ..., 3.0
+  CHECK(sum.elements.at("polygon") >= 13 * 3);  // pelvis and two feet per strobe, plus terrain
+  CHECK(count(svg, "class=\"terrain\"") == 1);
+  CHECK(count(svg, "class=\"com-path\"") == 1);
+  CHECK(svg.find("test &lt;biped&gt; &amp; walk") != std::string::npos);
+  CHECK(count(svg, "class=\"contact\"") >= 13);  // at least one foot on the ground in each
+  // Count-based spacing, 3-D model, spread and options.
+  const auto m3 = viz_test::make_biped<floating_root>();
+  const auto t3 = viz_test::make_walk(m3, 2.0, 0.02);
+  std::ostringstream o3;
+  save_filmstrip_svg(m3, t3, out_dir() + "/filmstrip.svg", {.count = 8});
+  write_filmstrip_svg(m3, t3, o3,
+                      {.count = 5, .spread = 0.5, .show_forces = true, .show_times = true});
+  CHECK(viz_test::check_xml(o3.str()).root == "svg");
+  CHECK(count(o3.str(), "class=\"strobe\"") == 5);
+  CHECK(count(o3.str(), "class=\"force\"") >= 5);
+  CHECK_THROWS_WITH(write_filmstrip_svg(m, traj, os, {.count = 0}), Catch::Contains("count"));
+  CHECK_THROWS_WITH(write_filmstrip_svg(m, traj, os, {.t_begin = 5, .t_end = 6}),
+                    Catch::Contains("empty time window"));
+}
+
+TEST_CASE("gait plot SVG: three panels with mean, band and cycles", "[viz][svg]") {
+  const auto m = viz_test::make_biped<planar_root>();
+  const auto traj = viz_test::make_walk(m, 4.0, 0.01);
+  std::ostringstream os;
+  write_gait_plot_svg(m, traj, os);
+  const std::string svg = os.str();
+  const auto sum = viz_test::check_xml(svg);
+  CHECK(sum.root == "svg");
+  CHECK(count(svg, "class=\"panel\"") == 3);
+  CHECK(count(svg, "class=\"band\"") == 3);
+  CHECK(count(svg, "class=\"mean\"") == 3);
+  const auto d = gait_cycles(m, traj);
+  CHECK(count(svg, "class=\"cycle\"") == 3u * d.num_cycles());
+  CHECK(svg.find("between heel strikes of lfoot") != std::string::npos);
+  save_gait_plot_svg(m, traj, out_dir() + "/gait.svg");
+  // No strikes: still a valid figure, saying so.
+  auto still = viz_test::make_walk(m, 0.4, 0.01);
+  for (auto& f : still.frames) std::fill(f.contact_active.begin(), f.contact_active.end(), 0);
+  std::ostringstream o2;
+  write_gait_plot_svg(m, still, o2);
+  CHECK(viz_test::check_xml(o2.str()).root == "svg");
+  CHECK(o2.str().find("no complete gait cycle") != std::string::npos);
+}
+
+TEST_CASE("convergence log: columns found by name in any order", "[viz][svg]") {
+  const std::string csv =
+      "# optimizer log\n"
+      "Sigma, Median [J], restart, note, Evaluations, best (J), generation\n"
+      "0.5, 100, 0, start, 16, 90, 1\n"
+      "0.4, 60, 0, -, 32, 50, 2\n"
+      "\n"
+      "0.3, 20, 0, -, 48, 10, 3\n"
+      "0.6, 80, 1, restart, 64, 10, 4\n"
+      "0.1, 2, 1, -, 80, 0.5, 5\n";
+  std::istringstream is(csv);
+  const convergence_log log = read_convergence_csv(is, "log.csv");
+  REQUIRE(log.rows.size() == 5);
+  CHECK(log.find({"best"}) == 5);
+  CHECK(log.find({"median"}) == 1);
+  CHECK(log.find("EVALUATIONS") == 4);
+  CHECK(std::isnan(log.rows[0][3]));  // text cell
+  std::ostringstream os;
+  write_convergence_plot_svg(log, os);
+  const std::string svg = os.str();
+  CHECK(viz_test::check_xml(svg).root == "svg");
+  CHECK(count(svg, "class=\"series\"") == 3);   // best, median, sigma
+  CHECK(count(svg, "class=\"restart\"") == 2);  // in both panels
+  CHECK(svg.find("data-column=\"best (J)\"") != std::string::npos);
+  // Explicit columns, and a missing one named in the error.
+  std::ostringstream o2;
+  write_convergence_plot_svg(
+      log, o2, {.x_column = "generation", .y_columns = {"best"}, .sigma_column = "-"});
+  CHECK(count(o2.str(), "class=\"series\"") == 1);
+  CHECK_THROWS_WITH(write_convergence_plot_svg(log, o2, {.y_columns = {"fitness"}}),
+                    Catch::Contains("no column 'fitness'") && Catch::Contains("'Sigma'"));
+  // A short row names its line.
+  std::istringstream bad("generation,best\n1,2\n3\n");
+  CHECK_THROWS_WITH(read_convergence_csv(bad, "bad.csv"),
+                    Catch::Contains("bad.csv") && Catch::Contains("line 3"));
+  std::istringstream empty("# nothing\n");
+  CHECK_THROWS_WITH(read_convergence_csv(empty), Catch::Contains("no header"));
+  // File round trip.
+  const std::string path = out_dir() + "/convergence.csv";
+  {
+    std::ofstream f(path);
+    f << csv;
+  }
+  save_convergence_plot_svg(path, out_dir() + "/convergence.svg");
+  CHECK(std::filesystem::file_size(out_dir() + "/convergence.svg") > 500);
+}
