@@ -7,13 +7,31 @@
 /// use for torques computed in the world frame. Gains are fixed per actuator; a controller whose
 /// gains are optimized computes its torques itself and uses torque_actuator.
 #include <Eigen/Core>
+#include <algorithm>
 #include <cmath>
 #include <utility>
 
+#include <Eigen/Cholesky>
+#include <Eigen/Eigenvalues>
+
 #include "gaitsynth/actuators/concept.hpp"
+#include "gaitsynth/dynamics/crba.hpp"
+#include "gaitsynth/dynamics/workspace.hpp"
 #include "gaitsynth/error.hpp"
 
 namespace gaitsynth {
+
+/// Effective inertia (kg m^2) of each joint DOF at the neutral configuration: 1 / (M^-1)_jj, with
+/// M the joint-space inertia (crba). It is the inertia a torque at DOF j meets when every other
+/// coordinate, the floating root included, is free: the relative inertia of the two segments the
+/// joint connects (a foot and the rest of the body), smaller than M_jj, which locks the rest.
+template <root_joint Root>
+Eigen::VectorXd joint_effective_inertia(const model<Root>& m) {
+  auto ws = make_workspace(m);
+  const Eigen::MatrixXd& M = crba(m, ws, neutral_configuration(m));
+  const Eigen::MatrixXd Minv = M.ldlt().solve(Eigen::MatrixXd::Identity(m.nv(), m.nv()));
+  return Minv.diagonal().tail(m.num_joint_dofs()).cwiseInverse();
+}
 
 struct pd_actuator {
   using state_type = no_actuator_state;
@@ -32,6 +50,57 @@ struct pd_actuator {
     const int nj = m.num_joint_dofs();
     return pd_actuator(Eigen::VectorXd::Constant(nj, kp), Eigen::VectorXd::Constant(nj, kd),
                        feedforward);
+  }
+
+  /// Gains kp, kd capped so that explicit PD servos stay stable at timestep dt.
+  ///
+  /// Why: the PD torque is explicit. One joint of inertia I under semi-implicit Euler is stable iff
+  /// kp dt^2 / I + 2 kd dt / I < 4 (Jury's test on its 2 x 2 step matrix). For the whole tree the
+  /// matrix form is lambda_max(M^-1 (Kp dt^2 + 2 Kd dt)) < 4 with M the joint-space inertia, and
+  /// the light distal joints couple: with the published SIMBICON gains (ankle kp 300, kd 30, toe kd
+  /// 2, Wang et al. 2009 Table 2), the Wang 2009 humanoid's feet and toes chatter at the Nyquist
+  /// frequency at 2400 Hz (its ankle_y has I = 3.5e-3 kg m^2: 2 kd dt / I = 7). ODE, which the
+  /// papers used, pinned the feet with hard contact constraints, which hid this.
+  ///
+  /// How: every DOF j gets kd_j <= c I_j / dt and kp_j <= c I_j / dt^2, I_j its effective inertia
+  /// (joint_effective_inertia), with the largest c (bisection) for which
+  /// lambda_max(M^-1 (Kp dt^2 + 2 Kd dt)) <= 2 margin at the neutral configuration. Heavy joints
+  /// keep their gains; only the light ones are softened. margin 1 keeps half the stable range.
+  template <root_joint Root>
+  static pd_actuator capped(const model<Root>& m, const Eigen::VectorXd& kp,
+                            const Eigen::VectorXd& kd, double dt, double margin = 1.0,
+                            bool feedforward = false) {
+    check_positive(dt, "pd_actuator::capped: dt (s)");
+    check_positive(margin, "pd_actuator::capped: margin");
+    const int nj = m.num_joint_dofs(), nv = m.nv();
+    check_size(kp.size(), nj, "pd_actuator::capped: kp (one gain per joint DOF)");
+    check_size(kd.size(), nj, "pd_actuator::capped: kd (one gain per joint DOF)");
+    pd_actuator(kp, kd).make_state(m);  // validates finite, >= 0
+    auto ws = make_workspace(m);
+    const Eigen::MatrixXd M = crba(m, ws, neutral_configuration(m));
+    const Eigen::MatrixXd Minv = M.ldlt().solve(Eigen::MatrixXd::Identity(nv, nv));
+    const Eigen::VectorXd I = Minv.diagonal().tail(nj).cwiseInverse();
+    auto gains_at = [&](double c, Eigen::VectorXd& kp_c, Eigen::VectorXd& kd_c) {
+      kp_c = kp.cwiseMin(c / (dt * dt) * I);
+      kd_c = kd.cwiseMin(c / dt * I);
+    };
+    auto rate = [&](const Eigen::VectorXd& kp_c, const Eigen::VectorXd& kd_c) {
+      Eigen::MatrixXd K = Eigen::MatrixXd::Zero(nv, nv);
+      K.diagonal().tail(nj) = kp_c * (dt * dt) + 2.0 * dt * kd_c;
+      Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd> es(K, M, Eigen::EigenvaluesOnly);
+      return es.eigenvalues().maxCoeff();
+    };
+    Eigen::VectorXd kp_c = kp, kd_c = kd;
+    if (rate(kp_c, kd_c) > 2.0 * margin) {
+      double lo = 0.0, hi = 4.0;  // c = 4 caps nothing a stable single joint could have
+      for (int it = 0; it < 40; ++it) {
+        const double c = 0.5 * (lo + hi);
+        gains_at(c, kp_c, kd_c);
+        (rate(kp_c, kd_c) <= 2.0 * margin ? lo : hi) = c;
+      }
+      gains_at(lo, kp_c, kd_c);
+    }
+    return pd_actuator(std::move(kp_c), std::move(kd_c), feedforward);
   }
 
   /// Validates the gains against the model (sizes, finite, >= 0); throws std::invalid_argument

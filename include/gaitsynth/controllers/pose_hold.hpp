@@ -2,11 +2,13 @@
 /// \file controllers/pose_hold.hpp
 /// The simplest controller: hold one target pose. Its parameters are the target joint angles
 /// (num_joint_dofs, rad). With pd_actuator it outputs the targets (mode joint_target); with
-/// torque_actuator it runs its own PD law tau = kp (target - q) - kd qdot (mode joint_torque).
+/// torque_actuator it runs its own PD law tau_j = kp_j (target_j - q_j) - kd_j qdot_j (mode
+/// joint_torque; all gains 0 makes a passive character).
 /// Used by tests, benchmarks (a standing humanoid) and the simulation demo.
 #include <Eigen/Core>
 #include <cstdint>
 #include <span>
+#include <utility>
 
 #include "gaitsynth/actuators/concept.hpp"
 #include "gaitsynth/controllers/concept.hpp"
@@ -18,8 +20,9 @@ namespace gaitsynth {
 struct pose_hold_options {
   command_kind output = command_kind::joint_target;  ///< joint_target or joint_torque
   double period = 0.0;                               ///< s between commands (0: every physics step)
-  double kp = 0.0;                                   ///< N m / rad, joint_torque mode only
-  double kd = 0.0;                                   ///< N m s / rad, joint_torque mode only
+  /// joint_torque mode only: per joint DOF gains (N m / rad, N m s / rad); empty means 0 (a
+  /// passive character). pd_actuator::capped gives gains that are stable at a timestep.
+  Eigen::VectorXd kp, kd;
 };
 
 class pose_hold {
@@ -32,19 +35,27 @@ class pose_hold {
   using options = pose_hold_options;
 
   /// A pose holder for a model with `num_joint_dofs` joint DOFs.
-  explicit pose_hold(int num_joint_dofs, options o = {}) : opt_(o), target_(num_joint_dofs) {
+  explicit pose_hold(int num_joint_dofs, options o = {})
+      : opt_(std::move(o)), target_(num_joint_dofs > 0 ? num_joint_dofs : 0) {
     check_argument(num_joint_dofs >= 0, "pose_hold: num_joint_dofs must be >= 0, got ",
                    num_joint_dofs);
-    check_argument(o.output == command_kind::joint_target || o.output == command_kind::joint_torque,
-                   "pose_hold: output must be joint_target or joint_torque");
-    check_argument(std::isfinite(o.period) && o.period >= 0,
-                   "pose_hold: period must be finite and >= 0 s, got ", o.period);
-    check_argument(std::isfinite(o.kp) && o.kp >= 0 && std::isfinite(o.kd) && o.kd >= 0,
-                   "pose_hold: gains must be finite and >= 0, got kp = ", o.kp, ", kd = ", o.kd);
+    check_argument(
+        opt_.output == command_kind::joint_target || opt_.output == command_kind::joint_torque,
+        "pose_hold: output must be joint_target or joint_torque");
+    check_argument(std::isfinite(opt_.period) && opt_.period >= 0,
+                   "pose_hold: period must be finite and >= 0 s, got ", opt_.period);
+    for (Eigen::VectorXd* g : {&opt_.kp, &opt_.kd}) {
+      if (g->size() == 0) g->setZero(num_joint_dofs);
+      check_size(g->size(), num_joint_dofs, "pose_hold: gains (one per joint DOF)");
+      for (Eigen::Index j = 0; j < g->size(); ++j)
+        check_argument(std::isfinite((*g)[j]) && (*g)[j] >= 0, "pose_hold: gain of DOF ", j,
+                       " must be finite and >= 0, got ", (*g)[j]);
+    }
     target_.setZero();
   }
   template <root_joint Root>
-  explicit pose_hold(const model<Root>& m, options o = {}) : pose_hold(m.num_joint_dofs(), o) {}
+  explicit pose_hold(const model<Root>& m, options o = {})
+      : pose_hold(m.num_joint_dofs(), std::move(o)) {}
 
   std::size_t num_parameters() const { return static_cast<std::size_t>(target_.size()); }
 
@@ -72,7 +83,8 @@ class pose_hold {
       cmd.head(nj) = target_;
       if (cmd.size() > nj) cmd.tail(cmd.size() - nj).setZero();  // no feed-forward torque
     } else {
-      cmd = opt_.kp * (target_ - s.joint_angles()) - opt_.kd * s.joint_velocities();
+      cmd = opt_.kp.cwiseProduct(target_ - s.joint_angles()) -
+            opt_.kd.cwiseProduct(s.joint_velocities());
     }
   }
 
