@@ -3,11 +3,16 @@
 // f < 1e-8 (the numbers in docs/optimizers.md come from this program).
 //
 //   optimizer_statistics [--dims 10,40] [--seeds 11] [--cases sphere,ellipsoid,...] [--csv FILE]
-//                        [--threads 1]
+//                        [--threads 1] [--log-dir DIR] [--log-seed 0]
+//
+// With --log-dir, the run of seed --log-seed (default 0) of every case writes its per-iteration
+// CSV log to DIR/<case>_<n>.csv (input of scripts/plot_convergence.py).
 //
 // Cases: sphere ellipsoid rotated_ellipsoid rosenbrock cigar discus (CMA-ES, x0 ~ U[-3, 3]^n,
-// sigma0 = 2), rastrigin_ipop rastrigin_bipop (x0 ~ U[-5, 5]^n... see below), bounded_sphere
-// (optimum 0.9 in [0, 1]^n), sds_quadratic, sds_rosenbrock.
+// sigma0 = 2, target 1e-8), rastrigin_ipop rastrigin_bipop (same start, up to 9 restarts, 2e6
+// evaluations), bounded_sphere bounded_sphere_repair (optimum 0.9 in [0, 1]^n, mean 0.5,
+// sigma0 = 0.3, rejection sampling / repair), sds_quadratic (sum (i+1)(x_i - 1)^2 to 1e-8) and
+// sds_rosenbrock (to 1e-6), SDS from x0 ~ U[-3, 3]^n with alpha0 = 0.5.
 #include <gaitsynth/optimizers/optimizers.hpp>
 #include <gaitsynth/optimizers/test_functions.hpp>
 
@@ -27,6 +32,16 @@
 using namespace gaitsynth;
 
 namespace {
+
+std::string g_log_dir;     // --log-dir
+std::string g_log_name;    // <case>_<n>.csv of the current run, "" if not logged
+int g_log_seed = 0;        // --log-seed
+
+run_options logging() {
+  run_options ro;
+  if (!g_log_name.empty()) ro.log_file = g_log_dir + "/" + g_log_name;
+  return ro;
+}
 
 struct run_outcome {
   bool success = false;
@@ -52,7 +67,7 @@ run_outcome run_cmaes(F f, int n, std::uint64_t seed, unsigned threads) {
   o.stop.target_value = 1e-8;
   cmaes es(parameter_space::unbounded(uniform_x0(n, -3, 3, seed)), o);
   thread_pool_evaluator pool(threads);
-  const auto r = minimize(es, f, pool);
+  const auto r = minimize(es, f, pool, logging());
   return {r.stopped == stop_criterion::target_value, r.evaluations, r.value, r.stopped, 0};
 }
 
@@ -67,7 +82,7 @@ run_outcome run_rastrigin(int n, std::uint64_t seed, restart_strategy strategy, 
   ro.max_restarts = 9;
   cmaes_restarts es(parameter_space::unbounded(uniform_x0(n, -3, 3, seed)), o, ro);
   thread_pool_evaluator pool(threads);
-  const auto r = minimize(es, test_functions::rastrigin, pool);
+  const auto r = minimize(es, test_functions::rastrigin, pool, logging());
   return {r.stopped == stop_criterion::target_value, r.evaluations, r.value, r.stopped,
           r.restarts};
 }
@@ -82,7 +97,7 @@ run_outcome run_bounded(int n, std::uint64_t seed, bound_handling bh, unsigned t
                                 Eigen::VectorXd::Constant(n, 0.5)),
            o);
   thread_pool_evaluator pool(threads);
-  const auto r = minimize(es, test_functions::shifted_sphere{0.9}, pool);
+  const auto r = minimize(es, test_functions::shifted_sphere{0.9}, pool, logging());
   return {r.stopped == stop_criterion::target_value, r.evaluations, r.value, r.stopped, 0};
 }
 
@@ -94,7 +109,7 @@ run_outcome run_sds(F f, int n, std::uint64_t seed, double target, std::int64_t 
   o.stop.target_value = target;
   o.stop.max_evaluations = budget;
   sds s(parameter_space::unbounded(uniform_x0(n, -3, 3, seed)), o);
-  const auto r = minimize(s, f);
+  const auto r = minimize(s, f, logging());
   return {r.stopped == stop_criterion::target_value, r.evaluations, r.value, r.stopped, 0};
 }
 
@@ -135,6 +150,10 @@ int main(int argc, char** argv) {
       cases = split(next());
     } else if (a == "--csv") {
       csv = next();
+    } else if (a == "--log-dir") {
+      g_log_dir = next();
+    } else if (a == "--log-seed") {
+      g_log_seed = std::stoi(next());
     } else if (a == "--threads") {
       threads = static_cast<unsigned>(std::stoi(next()));
     } else {
@@ -156,6 +175,7 @@ int main(int argc, char** argv) {
       std::vector<run_outcome> rs;
       for (int s = 0; s < seeds; ++s) {
         const auto seed = static_cast<std::uint64_t>(s);
+        g_log_name = (!g_log_dir.empty() && s == g_log_seed) ? c + "_" + std::to_string(n) + ".csv" : "";
         run_outcome r;
         if (c == "sphere") r = run_cmaes(test_functions::sphere, n, seed, threads);
         else if (c == "ellipsoid") r = run_cmaes(test_functions::ellipsoid, n, seed, threads);
