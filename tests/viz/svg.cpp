@@ -58,7 +58,7 @@ TEST_CASE("filmstrip SVG: well-formed, one group per strobe frame", "[viz][svg]"
   const auto m3 = viz_test::make_biped<floating_root>();
   const auto t3 = viz_test::make_walk(m3, 2.0, 0.02);
   std::ostringstream o3;
-  save_filmstrip_svg(m3, t3, out_dir() + "/filmstrip.svg", {.count = 8});
+  save_filmstrip_svg(m3, t3, out_dir() + "/filmstrip.svg", {.count = 6, .spread = 0.35});
   write_filmstrip_svg(m3, t3, o3,
                       {.count = 5, .spread = 0.5, .show_forces = true, .show_times = true});
   CHECK(viz_test::check_xml(o3.str()).root == "svg");
@@ -130,6 +130,23 @@ TEST_CASE("convergence log: columns found by name in any order", "[viz][svg]") {
                     Catch::Contains("bad.csv") && Catch::Contains("line 3"));
   std::istringstream empty("# nothing\n");
   CHECK_THROWS_WITH(read_convergence_csv(empty), Catch::Contains("no header"));
+  // The log of optimizers/minimize.hpp: quoted parameter names, stage and restart markers.
+  std::istringstream b(
+      "stage,restart,iteration,evaluations,best,iteration_best,iteration_median,iteration_worst,"
+      "step_size,axis_ratio,batch_size,non_finite,elapsed_s,\"kp, hip\",\"say \"\"hi\"\"\"\n"
+      "0,0,1,10,5,5,6,7,0.3,1,10,0,0.1,1.5,2\n"
+      "0,1,2,20,4,4,5,6,0.2,1,10,0,0.2,1.4,2.1\n"
+      "1,0,3,30,3,3,4,5,0.1,1,10,0,0.3,1.3,2.2\n");
+  const convergence_log blog = read_convergence_csv(b);
+  REQUIRE(blog.columns.size() == 15);
+  CHECK(blog.columns[13] == "kp, hip");
+  CHECK(blog.columns[14] == "say \"hi\"");
+  CHECK(blog.rows[2][13] == 1.3);
+  std::ostringstream o3;
+  write_convergence_plot_svg(blog, o3);
+  CHECK(viz_test::check_xml(o3.str()).root == "svg");
+  CHECK(count(o3.str(), "class=\"series\"") == 4);   // best, iteration_median, _worst, step_size
+  CHECK(count(o3.str(), "class=\"restart\"") == 4);  // rows 2 and 3, in both panels
   // File round trip.
   const std::string path = out_dir() + "/convergence.csv";
   {

@@ -7,8 +7,11 @@
 /// The reader is tolerant by design (logs come from several optimizers and versions): columns are
 /// found by header name, case-insensitively and ignoring a unit suffix such as " [s]" or "(s)", in
 /// any order; extra columns are ignored; '#' lines and blank lines are skipped; ',' is the
-/// separator (';' or tab if the header has no comma); a non-numeric cell reads as NaN and is not
-/// drawn. A row with the wrong number of cells throws std::runtime_error naming the line.
+/// separator (';' or tab if the header has no comma), cells may be quoted ("a,b", "" for a quote);
+/// a non-numeric cell reads as NaN and is not drawn. The log of optimizers/minimize.hpp (columns
+/// stage, restart, iteration, evaluations, best, iteration_median, iteration_worst, step_size,
+/// ..., then one per parameter) is read as it is. A row with the wrong number of cells throws
+/// std::runtime_error naming the line.
 #include <algorithm>
 #include <cctype>
 #include <cmath>
@@ -81,18 +84,39 @@ inline std::string trim(std::string_view s) {
   if (o.size() >= 2 && o.front() == '"' && o.back() == '"') o = o.substr(1, o.size() - 2);
   return o;
 }
+/// Cells of one CSV line: separated by `sep`, a cell in double quotes may hold the separator and
+/// "" for a quote (RFC 4180, as optimizers/minimize.hpp escapes parameter names). Spaces around
+/// cells are trimmed.
 inline std::vector<std::string> split(const std::string& line, char sep) {
   std::vector<std::string> out;
   std::string cur;
-  for (char c : line) {
-    if (c == sep) {
-      out.push_back(trim(cur));
+  bool quoted = false, was_quoted = false;
+  auto push = [&] {
+    out.push_back(was_quoted ? cur : trim(cur));
+    cur.clear();
+    was_quoted = false;
+  };
+  for (std::size_t i = 0; i < line.size(); ++i) {
+    const char c = line[i];
+    if (quoted) {
+      if (c == '"' && i + 1 < line.size() && line[i + 1] == '"') {
+        cur += '"';
+        ++i;
+      } else if (c == '"') {
+        quoted = false;
+      } else {
+        cur += c;
+      }
+    } else if (c == '"' && trim(cur).empty()) {
+      quoted = was_quoted = true;
       cur.clear();
-    } else {
+    } else if (c == sep) {
+      push();
+    } else if (!(was_quoted && std::isspace(static_cast<unsigned char>(c)))) {
       cur += c;
     }
   }
-  out.push_back(trim(cur));
+  push();
   return out;
 }
 }  // namespace viz_detail
@@ -189,10 +213,12 @@ inline void write_convergence_plot_svg(const convergence_log& log, std::ostream&
                              "best", "best_f", "f_best", "fbest", "best_fitness", "best_cost",
                              "best_value", "best_so_far", "best_ever"},
                          std::initializer_list<std::string_view>{"median", "median_f", "f_median",
-                                                                 "median_fitness", "median_cost"},
+                                                                 "median_fitness", "median_cost",
+                                                                 "iteration_median"},
                          std::initializer_list<std::string_view>{"mean", "mean_f", "f_mean",
                                                                  "mean_fitness", "mean_cost"},
-                         std::initializer_list<std::string_view>{"worst", "worst_f", "f_worst"}}) {
+                         std::initializer_list<std::string_view>{"worst", "worst_f", "f_worst",
+                                                                 "iteration_worst"}}) {
       const int c = log.find(aliases);
       if (c >= 0) yc.push_back(c);
     }
@@ -207,7 +233,9 @@ inline void write_convergence_plot_svg(const convergence_log& log, std::ostream&
     sc = require(opt.sigma_column);
   else
     sc = log.find({"sigma", "step_size", "stepsize", "step"});
+  // Restarts (and continuation stages) are marked where the column's value changes.
   const int rc = log.find({"restart", "restarts", "run"});
+  const int stc = log.find({"stage"});
 
   std::vector<double> x(log.rows.size());
   for (std::size_t i = 0; i < x.size(); ++i)
@@ -256,9 +284,11 @@ inline void write_convergence_plot_svg(const convergence_log& log, std::ostream&
   P.log_y = log_y;
   P.draw_axes(os, sc >= 0 ? "" : xlabel, log_y ? "objective (log)" : "objective", opt.title);
   auto restarts = [&](const plot_panel& Q) {
-    if (rc < 0) return;
+    auto changed = [&](int c, std::size_t i) {
+      return c >= 0 && log.rows[i][c] != log.rows[i - 1][c];
+    };
     for (std::size_t i = 1; i < log.rows.size(); ++i)
-      if (log.rows[i][rc] != log.rows[i - 1][rc] && std::isfinite(x[i]))
+      if ((changed(rc, i) || changed(stc, i)) && std::isfinite(x[i]))
         os << "<line class=\"restart\" x1=\"" << fnum(Q.X(x[i])) << "\" y1=\"" << fnum(Q.top)
            << "\" x2=\"" << fnum(Q.X(x[i])) << "\" y2=\"" << fnum(Q.top + Q.height)
            << "\" stroke=\"#999\" stroke-dasharray=\"5 4\"/>\n";

@@ -30,9 +30,11 @@ struct filmstrip_options {
   int count = 10;         ///< strobe frames when interval == 0
   double t_begin = -std::numeric_limits<double>::infinity();  ///< s (clamped to the trajectory)
   double t_end = std::numeric_limits<double>::infinity();     ///< s
-  double spread = 0.0;  ///< extra x shift per strobe frame, m (separates frames walking in place)
-  double width = 1200;  ///< SVG width, px (height follows from the drawing's aspect ratio)
-  bool fade = true;     ///< earlier frames fainter
+  /// Extra x shift per strobe frame, m: separates frames of a slow walk. The terrain is drawn at
+  /// the shifted places, so this is meant for flat ground.
+  double spread = 0.0;
+  double width = 1200;        ///< SVG width, px (height follows from the drawing's aspect ratio)
+  bool fade = true;           ///< earlier frames fainter
   bool show_contacts = true;  ///< touching contact points as red dots
   bool show_forces = false;   ///< contact force arrows (0.5 m per body weight)
   bool show_com_path = true;  ///< COM path as a dashed line
@@ -145,7 +147,7 @@ void write_filmstrip_svg(const model<Root>& m, const trajectory& traj, std::ostr
   const double ground_y = traj.frames[strobe.front()].com.y();
   double gx0 = xmin, gx1 = xmax;
   if (opt.show_terrain) {
-    const double pad = 0.1 * (xmax - xmin) + 0.2;
+    const double pad = 0.04 * (xmax - xmin) + 0.05;
     gx0 = xmin - pad;
     gx1 = xmax + pad;
     for (int s = 0; s <= 200; ++s) {
@@ -202,7 +204,7 @@ void write_filmstrip_svg(const model<Root>& m, const trajectory& traj, std::ostr
   for (std::size_t k = 0; k < strobe.size(); ++k) {
     const trajectory_frame& fr = traj.frames[strobe[k]];
     const double opacity = opt.fade && strobe.size() > 1
-                               ? 0.3 + 0.7 * static_cast<double>(k) / (strobe.size() - 1)
+                               ? 0.45 + 0.55 * static_cast<double>(k) / (strobe.size() - 1)
                                : 1.0;
     std::vector<film_item> items;
     int order = 0;

@@ -232,8 +232,9 @@ function drawGround(ctx, C, target) {
   } else {
     step = R > 8 ? 1.0 : 0.5;
     var cx = Math.round(target[0] / step) * step, cy = Math.round(target[1] / step) * step;
-    var n = Math.ceil(R / step);
-    for (var a = -n; a < n; a++) for (var c = -n; c < n; c++) {
+    // Planar characters live in the x-z plane: a narrow strip of ground reads best side on.
+    var n = Math.ceil(R / step), ny = D.planar ? 1 : n;
+    for (var a = -n; a < n; a++) for (var c = -ny; c < ny; c++) {
       var xa = cx + a * step, ya = cy + c * step;
       var odd = ((Math.round(xa / step) + Math.round(ya / step)) & 1) !== 0;
       quads.push({ p: [[xa, ya, 0], [xa + step, ya, 0], [xa + step, ya + step, 0], [xa, ya + step, 0]],

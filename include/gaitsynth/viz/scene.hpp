@@ -21,34 +21,10 @@
 
 #include "gaitsynth/error.hpp"
 #include "gaitsynth/model/model.hpp"
+#include "gaitsynth/rollout/recorder.hpp"  // q_coordinate_names, v_coordinate_names
 #include "gaitsynth/rollout/trajectory.hpp"
 
 namespace gaitsynth {
-
-/// Names of the generalized coordinates of model m, root first: planar "root_x", "root_z",
-/// "root_pitch"; floating "root_x", "root_y", "root_z", "root_qw", "root_qx", "root_qy", "root_qz";
-/// then the joint DOF names.
-template <root_joint Root>
-std::vector<std::string> q_coordinate_names(const model<Root>& m) {
-  std::vector<std::string> names;
-  if constexpr (Root::nq == 7) {
-    for (const char* n : {"root_x", "root_y", "root_z", "root_qw", "root_qx", "root_qy", "root_qz"})
-      names.emplace_back(n);
-  } else {
-    for (auto n : Root::dof_names) names.emplace_back(n);
-  }
-  for (const auto& d : m.dofs) names.push_back(d.name);
-  return names;
-}
-
-/// Names of the generalized velocities of model m (Root::dof_names, then the joint DOF names).
-template <root_joint Root>
-std::vector<std::string> v_coordinate_names(const model<Root>& m) {
-  std::vector<std::string> names;
-  for (auto n : Root::dof_names) names.emplace_back(n);
-  for (const auto& d : m.dofs) names.push_back(d.name);
-  return names;
-}
 
 /// World poses of every body for the configuration q (size nq), by the rule of model.hpp:
 /// R_i = R_parent * R(a_1, q_1) * ... (the body's DOFs in order), p_i = p_parent + R_parent *
