@@ -87,6 +87,7 @@ struct contact_state {
   std::vector<vec3> anchor;           ///< friction anchor, world, m (meaningful while active)
   std::vector<std::uint8_t> active;   ///< 1 while the point is below the terrain (d > 0)
   std::vector<std::uint8_t> sliding;  ///< 1 if friction was on the cone this step
+  std::vector<vec3> position;         ///< world position p of the point this step, m
   std::vector<double> depth;          ///< penetration d, m (<= 0: not touching)
   std::vector<vec3> normal;           ///< terrain normal n used this step (world)
   std::vector<double> normal_force;   ///< f_n >= 0, N
@@ -98,8 +99,10 @@ struct contact_state {
   int total_points_touching = 0;
   bool any_toe_top_touching = false;
   // ---- cached from the model by make_contact_state ------------------------------------------
-  std::vector<double> inv_mass;   ///< per body, 1/kg
-  std::vector<mat3> inv_inertia;  ///< per body, about its COM, body axes, 1/(kg m^2)
+  std::vector<double> inv_mass;         ///< per body, 1/kg
+  std::vector<mat3> inv_inertia;        ///< per body, about its COM, body axes, 1/(kg m^2)
+  std::vector<mat3> inv_inertia_world;  ///< scratch: R I^-1 R^T of touching bodies this step
+  std::vector<vec3> com_offset_world;   ///< scratch: R com of touching bodies this step, m
 
   int num_points() const { return static_cast<int>(anchor.size()); }
   int num_bodies() const { return static_cast<int>(points_touching.size()); }
@@ -109,6 +112,7 @@ struct contact_state {
     std::fill(anchor.begin(), anchor.end(), vec3::Zero());
     std::fill(active.begin(), active.end(), std::uint8_t{0});
     std::fill(sliding.begin(), sliding.end(), std::uint8_t{0});
+    std::fill(position.begin(), position.end(), vec3::Zero());
     std::fill(depth.begin(), depth.end(), 0.0);
     std::fill(normal.begin(), normal.end(), vec3::UnitZ());
     std::fill(normal_force.begin(), normal_force.end(), 0.0);
@@ -129,6 +133,7 @@ contact_state make_contact_state(const model<Root>& m) {
   s.anchor.assign(np, vec3::Zero());
   s.active.assign(np, 0);
   s.sliding.assign(np, 0);
+  s.position.assign(np, vec3::Zero());
   s.depth.assign(np, 0.0);
   s.normal.assign(np, vec3::UnitZ());
   s.normal_force.assign(np, 0.0);
@@ -137,6 +142,8 @@ contact_state make_contact_state(const model<Root>& m) {
   s.toe_top_touching.assign(nb, 0);
   s.inv_mass.resize(nb);
   s.inv_inertia.resize(nb);
+  s.inv_inertia_world.assign(nb, mat3::Zero());
+  s.com_offset_world.assign(nb, vec3::Zero());
   for (std::size_t b = 0; b < nb; ++b) {
     s.inv_mass[b] = 1.0 / m.bodies[b].mass;
     s.inv_inertia[b] = m.bodies[b].inertia.inverse();  // positive definite (model_builder)
@@ -145,12 +152,13 @@ contact_state make_contact_state(const model<Root>& m) {
 }
 
 namespace detail {
-/// 1 / m_eff(u): inverse effective mass of body b at world lever r (from its COM) along unit u,
-/// as a free rigid body.
-inline double inverse_effective_mass(const contact_state& s, int b, const mat3& R, const vec3& r,
-                                     const vec3& u) {
-  const vec3 ru = R.transpose() * r.cross(u);  // body axes
-  return s.inv_mass[b] + ru.dot(s.inv_inertia[b] * ru);
+/// |u|^2 / m_eff(u) for a (not necessarily unit) direction u: |u|^2 / m_b + (r x u)^T I_w^-1 (r x
+/// u), the inverse effective mass of the free body at lever r (from its COM, world) along u, times
+/// |u|^2.
+inline double scaled_inverse_effective_mass(double inv_mass, const mat3& inv_inertia_world,
+                                            const vec3& r, const vec3& u) {
+  const vec3 ru = r.cross(u);
+  return inv_mass * u.squaredNorm() + ru.dot(inv_inertia_world * ru);
 }
 
 /// c / (1 + n c dt / m_eff): the backward-Euler damping coefficient (penalty_contact.hpp).
@@ -182,6 +190,7 @@ void apply_contact_forces(const model<Root>& m, workspace<Root>& ws, const T& t,
   for (int k = 0; k < np; ++k) {
     const contact_point& cp = m.contact_points[k];
     const vec3 pw = point_position(m, ws, cp.body, cp.position);
+    s.position[k] = pw;
     const surface_contact c = terrain_penetration(t, pw);
     s.depth[k] = c.depth;
     s.normal[k] = c.normal;
@@ -195,6 +204,14 @@ void apply_contact_forces(const model<Root>& m, workspace<Root>& ws, const T& t,
     }
   }
 
+  for (int b = 0; b < s.num_bodies(); ++b)
+    if (s.points_touching[b] > 0) {
+      const mat3& R = ws.body_rotation[b];
+      s.com_offset_world[b].noalias() = R * m.bodies[b].com;
+      if (p.implicit_damping)
+        s.inv_inertia_world[b].noalias() = R * s.inv_inertia[b] * R.transpose();
+    }
+
   // Pass 2: forces.
   for (int k = 0; k < np; ++k) {
     const contact_point& cp = m.contact_points[k];
@@ -207,23 +224,26 @@ void apply_contact_forces(const model<Root>& m, workspace<Root>& ws, const T& t,
       continue;
     }
     const int b = cp.body;
-    const mat3& R = ws.body_rotation[b];
-    const vec3 rb = R * cp.position;  // from the body origin
-    const vec3 pw = ws.body_position[b] + rb;
+    const vec3& pw = s.position[k];
+    const vec3 rb = pw - ws.body_position[b];  // from the body origin
     const vec3 vw = ws.body_linear_velocity[b] + ws.body_angular_velocity[b].cross(rb);
     const vec3& n = s.normal[k];
     const double vn = n.dot(vw);
     const vec3 vt = vw - vn * n;
     const int nb = s.points_touching[b];
-    const vec3 r = rb - R * m.bodies[b].com;  // from the body's COM
+    const vec3 r = rb - s.com_offset_world[b];  // from the body's COM
 
     double kd = p.kd, bt = p.bt;
     if (p.implicit_damping) {
-      kd = detail::implicit_damping(p.kd, nb, dt, detail::inverse_effective_mass(s, b, R, r, n));
-      const double vt_norm = vt.norm();
-      if (vt_norm > 0.0)
-        bt = detail::implicit_damping(p.bt, nb, dt,
-                                      detail::inverse_effective_mass(s, b, R, r, vt / vt_norm));
+      const mat3& Iinv = s.inv_inertia_world[b];
+      kd = detail::implicit_damping(
+          p.kd, nb, dt, detail::scaled_inverse_effective_mass(s.inv_mass[b], Iinv, r, n));
+      // bt / (1 + n bt dt X / |vt|^2) with X = |vt|^2 / m_eff(vt), as one division.
+      const double vt2 = vt.squaredNorm();
+      if (vt2 > 0.0)
+        bt = p.bt * vt2 /
+             (vt2 +
+              nb * p.bt * dt * detail::scaled_inverse_effective_mass(s.inv_mass[b], Iinv, r, vt));
     }
     const double fn = std::max(0.0, p.kp * d - kd * vn);
 
