@@ -169,7 +169,8 @@ inline double implicit_damping(double c, int n, double dt, double inv_m_eff) {
 
 /// Computes the penalty contact force at every contact point of `m` against terrain `t`, adds them
 /// to ws.f_ext (accumulates: clear_external_wrenches first), updates anchors, forces and counts in
-/// `s`. Needs forward_kinematics(m, ws, q, v) for the current state.
+/// `s`. Needs forward_kinematics(m, ws, q, v) for the current state. Call it once per time step
+/// (it moves the friction anchors); multi-stage integrators hold its forces over the step.
 /// \param dt  the time step, s (finite, > 0; used by the implicit damping)
 /// \throws std::invalid_argument if `s` was not made for a model like `m` or dt is bad.
 template <root_joint Root, terrain T>
