@@ -10,6 +10,7 @@
 
 #include "gaitsynth/error.hpp"
 #include "gaitsynth/model/model.hpp"
+#include "gaitsynth/model/state.hpp"
 #include "gaitsynth/spatial/types.hpp"
 
 namespace gaitsynth {

@@ -161,6 +161,13 @@ void add_body_wrench(workspace<Root>& ws, int body, const vec6& wrench) {
   ws.f_ext[body] += wrench;
 }
 
+/// Forgets the cached kinematics, so the next algorithm recomputes them (benchmarks; never needed
+/// for correctness).
+template <root_joint Root>
+void invalidate_kinematics(workspace<Root>& ws) {
+  ws.scratch.level = 0;
+}
+
 namespace detail {
 /// Throws std::invalid_argument unless `ws` was made for a model with the sizes of `m`.
 template <root_joint Root>

@@ -1,0 +1,36 @@
+#pragma once
+/// \file center_of_mass.hpp
+/// Whole-body centre of mass and its velocity (world frame).
+#include "gaitsynth/dynamics/kinematics.hpp"
+
+namespace gaitsynth {
+
+/// Centre of mass of the whole model, world, m (after forward_kinematics).
+template <root_joint Root>
+vec3 center_of_mass(const model<Root>& m, const workspace<Root>& ws) {
+  const auto& s = ws.scratch;
+  vec3 c = vec3::Zero();
+  double mass = 0.0;
+  for (int b = 0; b < m.num_bodies(); ++b) {
+    c += s.body_inertia[b].mass * s.body_inertia[b].com;
+    mass += s.body_inertia[b].mass;
+  }
+  return s.ref + c / mass;
+}
+
+/// Velocity of the centre of mass, world, m/s (after forward_kinematics with v).
+template <root_joint Root>
+vec3 com_velocity(const model<Root>& m, const workspace<Root>& ws) {
+  const auto& s = ws.scratch;
+  vec3 p = vec3::Zero();
+  double mass = 0.0;
+  for (int b = 0; b < m.num_bodies(); ++b) {
+    const spatial::rigid_inertia& I = s.body_inertia[b];
+    const vec6& V = s.V[s.body_node[b]];
+    p += I.mass * (V.template tail<3>() + V.template head<3>().cross(I.com));
+    mass += I.mass;
+  }
+  return p / mass;
+}
+
+}  // namespace gaitsynth

@@ -1,0 +1,34 @@
+#pragma once
+/// \file momentum.hpp
+/// Whole-body (centroidal) momentum: linear momentum and angular momentum about the centre of mass,
+/// world axes (Orin & Goswami's centroidal momentum; Featherstone 2008, eq. 2.60 summed over bodies).
+#include "gaitsynth/dynamics/center_of_mass.hpp"
+
+namespace gaitsynth {
+
+struct momentum {
+  vec3 linear = vec3::Zero();   ///< kg m/s, world
+  vec3 angular = vec3::Zero();  ///< kg m^2/s, about the COM, world axes
+};
+
+/// Centroidal momentum (after forward_kinematics with v).
+template <root_joint Root>
+momentum centroidal_momentum(const model<Root>& m, const workspace<Root>& ws) {
+  const auto& s = ws.scratch;
+  vec6 h = vec6::Zero();  // about the reference point
+  vec3 c = vec3::Zero();
+  double mass = 0.0;
+  for (int b = 0; b < m.num_bodies(); ++b) {
+    const spatial::rigid_inertia& I = s.body_inertia[b];
+    h += I.momentum(s.V[s.body_node[b]]);
+    c += I.mass * I.com;
+    mass += I.mass;
+  }
+  c /= mass;
+  momentum out;
+  out.linear = h.template tail<3>();
+  out.angular = h.template head<3>() - c.cross(out.linear);  // shift from the reference to the COM
+  return out;
+}
+
+}  // namespace gaitsynth
