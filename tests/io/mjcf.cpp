@@ -23,6 +23,7 @@
 
 #include "gaitsynth/io/mjcf.hpp"
 #include "gaitsynth/model/state.hpp"
+#include "gaitsynth/models/models.hpp"
 #include "io/mjcf_test_models.hpp"
 
 using namespace gaitsynth;
@@ -400,6 +401,18 @@ TEST_CASE("the MJCF of every test model is well-formed and mirrors the model", "
     check_structure(ptree, oc.opt);
     check_structure(offset_tree, oc.opt);
     check_structure(offset_planar, oc.opt);
+  }
+}
+
+TEST_CASE("the MJCF of every built-in character is well-formed and mirrors it", "[io][mjcf]") {
+  mjcf_options peer;
+  peer.contact_geoms = true;
+  for (const mjcf_options& o : {mjcf_options{}, peer}) {
+    check_structure(sharon2005_human7(), o);
+    check_structure(sharon2005_human16(), o);
+    for (wang2009_shape s : wang2009_shapes) check_structure(wang2009_humanoid(s), o);
+    check_structure(wang2012_humanoid(), o);
+    check_structure(wu2010_biped(), o);
   }
 }
 
