@@ -33,9 +33,9 @@ using namespace gaitsynth;
 
 namespace {
 
-std::string g_log_dir;     // --log-dir
-std::string g_log_name;    // <case>_<n>.csv of the current run, "" if not logged
-int g_log_seed = 0;        // --log-seed
+std::string g_log_dir;   // --log-dir
+std::string g_log_name;  // <case>_<n>.csv of the current run, "" if not logged
+int g_log_seed = 0;      // --log-seed
 
 run_options logging() {
   run_options ro;
@@ -83,8 +83,7 @@ run_outcome run_rastrigin(int n, std::uint64_t seed, restart_strategy strategy, 
   cmaes_restarts es(parameter_space::unbounded(uniform_x0(n, -3, 3, seed)), o, ro);
   thread_pool_evaluator pool(threads);
   const auto r = minimize(es, test_functions::rastrigin, pool, logging());
-  return {r.stopped == stop_criterion::target_value, r.evaluations, r.value, r.stopped,
-          r.restarts};
+  return {r.stopped == stop_criterion::target_value, r.evaluations, r.value, r.stopped, r.restarts};
 }
 
 run_outcome run_bounded(int n, std::uint64_t seed, bound_handling bh, unsigned threads) {
@@ -127,10 +126,18 @@ int main(int argc, char** argv) {
   std::vector<int> dims = {10, 40};
   int seeds = 11;
   unsigned threads = 1;
-  std::vector<std::string> cases = {"sphere",         "ellipsoid",       "rotated_ellipsoid",
-                                    "rosenbrock",     "cigar",           "discus",
-                                    "rastrigin_ipop", "rastrigin_bipop", "bounded_sphere",
-                                    "bounded_sphere_repair", "sds_quadratic", "sds_rosenbrock"};
+  std::vector<std::string> cases = {"sphere",
+                                    "ellipsoid",
+                                    "rotated_ellipsoid",
+                                    "rosenbrock",
+                                    "cigar",
+                                    "discus",
+                                    "rastrigin_ipop",
+                                    "rastrigin_bipop",
+                                    "bounded_sphere",
+                                    "bounded_sphere_repair",
+                                    "sds_quadratic",
+                                    "sds_rosenbrock"};
   std::string csv;
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
@@ -158,7 +165,7 @@ int main(int argc, char** argv) {
       threads = static_cast<unsigned>(std::stoi(next()));
     } else {
       std::cerr << "usage: optimizer_statistics [--dims 10,40] [--seeds 11] [--cases a,b] "
-                   "[--csv FILE] [--threads T]\n";
+                   "[--csv FILE] [--threads T] [--log-dir DIR] [--log-seed S]\n";
       return 2;
     }
   }
@@ -175,27 +182,38 @@ int main(int argc, char** argv) {
       std::vector<run_outcome> rs;
       for (int s = 0; s < seeds; ++s) {
         const auto seed = static_cast<std::uint64_t>(s);
-        g_log_name = (!g_log_dir.empty() && s == g_log_seed) ? c + "_" + std::to_string(n) + ".csv" : "";
+        g_log_name =
+            (!g_log_dir.empty() && s == g_log_seed) ? c + "_" + std::to_string(n) + ".csv" : "";
         run_outcome r;
-        if (c == "sphere") r = run_cmaes(test_functions::sphere, n, seed, threads);
-        else if (c == "ellipsoid") r = run_cmaes(test_functions::ellipsoid, n, seed, threads);
+        if (c == "sphere")
+          r = run_cmaes(test_functions::sphere, n, seed, threads);
+        else if (c == "ellipsoid")
+          r = run_cmaes(test_functions::ellipsoid, n, seed, threads);
         else if (c == "rotated_ellipsoid")
           r = run_cmaes(test_functions::rotated_ellipsoid(n), n, seed, threads);
-        else if (c == "rosenbrock") r = run_cmaes(test_functions::rosenbrock, n, seed, threads);
-        else if (c == "cigar") r = run_cmaes(test_functions::cigar, n, seed, threads);
-        else if (c == "discus") r = run_cmaes(test_functions::discus, n, seed, threads);
-        else if (c == "rastrigin_ipop") r = run_rastrigin(n, seed, restart_strategy::ipop, threads);
+        else if (c == "rosenbrock")
+          r = run_cmaes(test_functions::rosenbrock, n, seed, threads);
+        else if (c == "cigar")
+          r = run_cmaes(test_functions::cigar, n, seed, threads);
+        else if (c == "discus")
+          r = run_cmaes(test_functions::discus, n, seed, threads);
+        else if (c == "rastrigin_ipop")
+          r = run_rastrigin(n, seed, restart_strategy::ipop, threads);
         else if (c == "rastrigin_bipop")
           r = run_rastrigin(n, seed, restart_strategy::bipop, threads);
-        else if (c == "bounded_sphere") r = run_bounded(n, seed, bound_handling::resample, threads);
+        else if (c == "bounded_sphere")
+          r = run_bounded(n, seed, bound_handling::resample, threads);
         else if (c == "bounded_sphere_repair")
           r = run_bounded(n, seed, bound_handling::repair, threads);
         else if (c == "sds_quadratic")
-          r = run_sds([](const Eigen::VectorXd& x) {
+          r = run_sds(
+              [](const Eigen::VectorXd& x) {
                 double f = 0;
-                for (Eigen::Index i = 0; i < x.size(); ++i) f += (i + 1.0) * (x[i] - 1.0) * (x[i] - 1.0);
+                for (Eigen::Index i = 0; i < x.size(); ++i)
+                  f += (i + 1.0) * (x[i] - 1.0) * (x[i] - 1.0);
                 return f;
-              }, n, seed, 1e-8, 1'000'000);
+              },
+              n, seed, 1e-8, 1'000'000);
         else if (c == "sds_rosenbrock")
           r = run_sds(test_functions::rosenbrock, n, seed, 1e-6, 2'000'000);
         else {
@@ -205,7 +223,7 @@ int main(int argc, char** argv) {
         rs.push_back(r);
         if (out.is_open())
           out << c << ',' << n << ',' << seed << ',' << r.success << ',' << r.evaluations << ','
-              << r.value << ',' << to_string(r.stopped) << ',' << r.restarts << '\n';
+              << r.value << ',' << to_string(r.stopped) << ',' << r.restarts << std::endl;
       }
       std::vector<std::int64_t> ev;
       int ok = 0;

@@ -45,7 +45,11 @@ void BM_cmaes_generation(benchmark::State& state) {
   state.counters["lambda"] = es.population_size();
   state.counters["eigen_gap"] = static_cast<double>(es.parameters().eigen_gap_iterations);
 }
-BENCHMARK(BM_cmaes_generation)->Arg(184)->Arg(500)->Arg(1000)->Unit(benchmark::kMicrosecond)
+BENCHMARK(BM_cmaes_generation)
+    ->Arg(184)
+    ->Arg(500)
+    ->Arg(1000)
+    ->Unit(benchmark::kMicrosecond)
     ->MinTime(2.0);
 
 // The eigendecomposition alone (Eigen's SelfAdjointEigenSolver on an n x n SPD matrix).
@@ -104,8 +108,8 @@ void BM_parallel_evaluation(benchmark::State& state) {
     es.tell(values);
   }
   state.counters["threads"] = threads;
-  state.counters["evals_per_s"] =
-      benchmark::Counter(32.0 * static_cast<double>(state.iterations()), benchmark::Counter::kIsRate);
+  state.counters["evals_per_s"] = benchmark::Counter(32.0 * static_cast<double>(state.iterations()),
+                                                     benchmark::Counter::kIsRate);
 }
 BENCHMARK(BM_parallel_evaluation)
     ->DenseRange(1, 4)

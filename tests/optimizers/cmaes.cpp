@@ -42,8 +42,8 @@ case_stats run_seeds(F f, int n, int seeds) {
 
 TEST_CASE("cmaes default strategy parameters follow the tutorial (Table 1)", "[optimizers]") {
   SECTION("n = 10: pycma reports (5_w,10)-aCMA-ES, mu_w = 3.2, w_1 = 45%") {
-    const auto p = cmaes_parameters::make(10, 4 + static_cast<int>(std::floor(3 * std::log(10))),
-                                          true, 0.5);
+    const auto p =
+        cmaes_parameters::make(10, 4 + static_cast<int>(std::floor(3 * std::log(10))), true, 0.5);
     CHECK(p.lambda == 10);
     CHECK(p.mu == 5);
     CHECK(p.mu_eff == Approx(3.1672).epsilon(1e-4));
@@ -119,7 +119,8 @@ TEST_CASE("cmaes reaches 1e-8 on the 40-D benchmark functions", "[optimizers]") 
   CHECK(run_seeds(tf::rosenbrock, n, 1).successes == 1);
 }
 
-TEST_CASE("cmaes solves the bounded 40-D shifted sphere (optimum 0.9 in [0, 1]^n)", "[optimizers]") {
+TEST_CASE("cmaes solves the bounded 40-D shifted sphere (optimum 0.9 in [0, 1]^n)",
+          "[optimizers]") {
   const int n = 40;
   for (auto bh : {bound_handling::resample, bound_handling::repair}) {
     cmaes_options o;
@@ -144,7 +145,8 @@ TEST_CASE("cmaes solves the bounded 40-D shifted sphere (optimum 0.9 in [0, 1]^n
   }
 }
 
-TEST_CASE("cmaes handles an optimum on the bound (resampling falls back to repair)", "[optimizers]") {
+TEST_CASE("cmaes handles an optimum on the bound (resampling falls back to repair)",
+          "[optimizers]") {
   const int n = 10;
   cmaes_options o;
   o.seed = 3;
@@ -294,11 +296,11 @@ TEST_CASE("cmaes stopping criteria are reported", "[optimizers]") {
     cmaes_options o;
     o.tol_mean_change = 1e-3;
     const int n = 10;
-    const auto r = minimize(
-        cmaes(parameter_space::box(Eigen::VectorXd::Zero(n), Eigen::VectorXd::Ones(n),
-                                   Eigen::VectorXd::Constant(n, 0.5)),
-              o),
-        tf::shifted_sphere{0.9});
+    const auto r =
+        minimize(cmaes(parameter_space::box(Eigen::VectorXd::Zero(n), Eigen::VectorXd::Ones(n),
+                                            Eigen::VectorXd::Constant(n, 0.5)),
+                       o),
+                 tf::shifted_sphere{0.9});
     CHECK(r.stopped == stop_criterion::mean_change);
     CHECK((r.x.array() - 0.9).abs().maxCoeff() < 0.05);
   }
@@ -341,8 +343,9 @@ TEST_CASE("cmaes stopping criteria are reported", "[optimizers]") {
   }
   SECTION("callback") {
     int calls = 0;
-    const auto r = minimize(cmaes(space10, {}), tf::sphere, run_options{},
-                            [&](const optimizer_status& s) { return ++calls < 5 && s.iteration < 100; });
+    const auto r =
+        minimize(cmaes(space10, {}), tf::sphere, run_options{},
+                 [&](const optimizer_status& s) { return ++calls < 5 && s.iteration < 100; });
     CHECK(r.stopped == stop_criterion::callback);
     CHECK(r.iterations == 5);
   }

@@ -29,7 +29,8 @@ std::vector<std::vector<std::string>> read_csv(const std::filesystem::path& p) {
 
 TEST_CASE("minimize writes one CSV row per iteration", "[optimizers]") {
   const auto dir = scratch_dir("csv");
-  parameter_space space({{"kp", 0.0, 10.0, 5.0}, {"kd", 0.0, 1.0, 0.5}, {"name,with,commas", -1, 1, 0}});
+  parameter_space space(
+      {{"kp", 0.0, 10.0, 5.0}, {"kd", 0.0, 1.0, 0.5}, {"name,with,commas", -1, 1, 0}});
   cmaes_options o;
   o.stop.max_iterations = 25;
   run_options ro;
@@ -37,8 +38,9 @@ TEST_CASE("minimize writes one CSV row per iteration", "[optimizers]") {
   ro.log_parameters = true;
   cmaes es(space, o);
   std::vector<optimizer_status> seen;
-  const auto r = minimize(es, [](const Eigen::VectorXd& x) { return x.squaredNorm(); }, ro,
-                          [&](const optimizer_status& s) { seen.push_back(s); });
+  const auto r = minimize(
+      es, [](const Eigen::VectorXd& x) { return x.squaredNorm(); }, ro,
+      [&](const optimizer_status& s) { seen.push_back(s); });
   const auto rows = read_csv(ro.log_file);
   REQUIRE(rows.size() == 26);
   CHECK(rows[0][0] == "stage");

@@ -37,7 +37,8 @@ inline double median(std::vector<double> v) {
 
 /// A fresh scratch directory under the build tree.
 inline std::filesystem::path scratch_dir(const std::string& name) {
-  const auto dir = std::filesystem::path(GAITSYNTH_BINARY_DIR) / "test_scratch" / "optimizers" / name;
+  const auto dir =
+      std::filesystem::path(GAITSYNTH_BINARY_DIR) / "test_scratch" / "optimizers" / name;
   std::filesystem::remove_all(dir);
   std::filesystem::create_directories(dir);
   return dir;

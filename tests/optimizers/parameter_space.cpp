@@ -65,8 +65,7 @@ TEST_CASE("parameter_space round trip user <-> normalized", "[optimizers]") {
 TEST_CASE("parameter_space rejects bad parameters, naming the value", "[optimizers]") {
   CHECK_THROWS_WITH(parameter_space({{"kp", 1.0, 1.0, 1.0}}),
                     Contains("'kp'") && Contains("lower bound (1)") && Contains("upper bound (1)"));
-  CHECK_THROWS_WITH(parameter_space({{"kd", 2.0, 1.0, 1.5}}),
-                    Contains("'kd'") && Contains("(2)"));
+  CHECK_THROWS_WITH(parameter_space({{"kd", 2.0, 1.0, 1.5}}), Contains("'kd'") && Contains("(2)"));
   CHECK_THROWS_AS(parameter_space({{"a", 0.0, 1.0, 2.0}}), std::invalid_argument);
   CHECK_THROWS_WITH(parameter_space({{"a", 0.0, 1.0, 2.0}}), Contains("initial value 2"));
   CHECK_THROWS_WITH(parameter_space({{"a", 0, 1, 0.5}, {"a", 0, 1, 0.5}}), Contains("duplicate"));
@@ -81,8 +80,8 @@ TEST_CASE("parameter_space rejects bad parameters, naming the value", "[optimize
 }
 
 TEST_CASE("parameter_space::with_initial checks size and bounds", "[optimizers]") {
-  const auto s = parameter_space::box(Eigen::Vector2d(0, 0), Eigen::Vector2d(1, 1),
-                                      Eigen::Vector2d(0.5, 0.5));
+  const auto s =
+      parameter_space::box(Eigen::Vector2d(0, 0), Eigen::Vector2d(1, 1), Eigen::Vector2d(0.5, 0.5));
   CHECK(s.with_initial(Eigen::Vector2d(0.1, 0.9)).initial() == Eigen::Vector2d(0.1, 0.9));
   CHECK_THROWS_WITH(s.with_initial(Eigen::Vector3d(0, 0, 0)),
                     Contains("x0") && Contains("expected 2, got 3"));

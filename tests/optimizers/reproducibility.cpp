@@ -28,9 +28,8 @@ bool same(const fingerprint& a, const fingerprint& b) {
 template <class O, class F, class E>
 fingerprint run(O& opt, F f, E& eval, const run_options& ro = {}) {
   fingerprint fp;
-  const auto r = minimize(opt, f, eval, ro, [&](const optimizer_status& s) {
-    fp.trace.push_back(s.best_value);
-  });
+  const auto r = minimize(opt, f, eval, ro,
+                          [&](const optimizer_status& s) { fp.trace.push_back(s.best_value); });
   fp.x = r.x;
   fp.value = r.value;
   fp.evaluations = r.evaluations;
@@ -153,7 +152,8 @@ TEST_CASE("A run killed and resumed from its checkpoint continues exactly", "[op
 TEST_CASE("Checkpoints: exact state round trip and clear errors", "[optimizers]") {
   const auto dir = scratch_dir("checkpoint");
   auto a = make_cmaes();
-  minimize(a, tf::ellipsoid, run_options{}, [](const optimizer_status& s) { return s.iteration < 33; });
+  minimize(a, tf::ellipsoid, run_options{},
+           [](const optimizer_status& s) { return s.iteration < 33; });
   save_checkpoint(a, dir / "a.ckpt");
   auto b = make_cmaes();
   load_checkpoint(b, dir / "a.ckpt");

@@ -24,8 +24,8 @@ TEST_CASE("SDS solves a separable quadratic to 1e-8", "[optimizers]") {
     sds_options o;
     o.initial_step = 0.5;
     o.stop.target_value = 1e-8;
-    const auto r = minimize(sds(parameter_space::unbounded(uniform_x0(10, -3, 3, seed)), o),
-                            quadratic);
+    const auto r =
+        minimize(sds(parameter_space::unbounded(uniform_x0(10, -3, 3, seed)), o), quadratic);
     CHECK(r.stopped == stop_criterion::target_value);
     CHECK(r.value <= 1e-8);
     CHECK((r.x.array() - 1.0).abs().maxCoeff() < 1e-4);
@@ -38,13 +38,14 @@ TEST_CASE("SDS solves the 10-D Rosenbrock function to 1e-6 from x = 0", "[optimi
   o.min_step = 1e-12;
   o.stop.target_value = 1e-6;
   o.stop.max_evaluations = 1'000'000;
-  const auto r = minimize(sds(parameter_space::unbounded(Eigen::VectorXd::Zero(10)), o),
-                          tf::rosenbrock);
+  const auto r =
+      minimize(sds(parameter_space::unbounded(Eigen::VectorXd::Zero(10)), o), tf::rosenbrock);
   CHECK(r.stopped == stop_criterion::target_value);
   CHECK((r.x.array() - 1.0).abs().maxCoeff() < 0.01);
 }
 
-TEST_CASE("SDS follows Sharon 2005 Fig. 2: greedy coordinate moves, alpha shrinks", "[optimizers]") {
+TEST_CASE("SDS follows Sharon 2005 Fig. 2: greedy coordinate moves, alpha shrinks",
+          "[optimizers]") {
   // f = |x0 - 0.3| + |x1 + 0.2| on the grid of alpha = 0.1: one probe per coordinate and sweep.
   sds_options o;
   o.initial_step = 0.1;

@@ -115,8 +115,8 @@ struct cmaes_parameters {
     // [T] Eqs. (55)-(58).
     const double alpha_cov = 2.0;
     p.c_sigma = (p.mu_eff + 2.0) / (N + p.mu_eff + 5.0);
-    p.d_sigma = 1.0 + 2.0 * std::max(0.0, std::sqrt((p.mu_eff - 1.0) / (N + 1.0)) - 1.0) +
-                p.c_sigma;
+    p.d_sigma =
+        1.0 + 2.0 * std::max(0.0, std::sqrt((p.mu_eff - 1.0) / (N + 1.0)) - 1.0) + p.c_sigma;
     p.c_c = (4.0 + p.mu_eff / N) / (N + 4.0 + 2.0 * p.mu_eff / N);
     p.c_1 = alpha_cov / ((N + 1.3) * (N + 1.3) + p.mu_eff);
     p.c_mu = std::min(1.0 - p.c_1, alpha_cov * (p.mu_eff - 2.0 + 1.0 / p.mu_eff) /
@@ -171,10 +171,10 @@ class cmaes {
                    opt_.stop.no_improvement_iterations);
     check_argument(!std::isnan(opt_.stop.target_value),
                    "termination_options::target_value must not be NaN");
-    for (auto [v, what] : {std::pair{opt_.tol_mean_change, "tol_mean_change"},
-                           std::pair{opt_.tol_fun, "tol_fun"}, std::pair{opt_.tol_x, "tol_x"},
-                           std::pair{opt_.max_condition, "max_condition"},
-                           std::pair{opt_.tol_up_sigma, "tol_up_sigma"}})
+    for (auto [v, what] :
+         {std::pair{opt_.tol_mean_change, "tol_mean_change"}, std::pair{opt_.tol_fun, "tol_fun"},
+          std::pair{opt_.tol_x, "tol_x"}, std::pair{opt_.max_condition, "max_condition"},
+          std::pair{opt_.tol_up_sigma, "tol_up_sigma"}})
       check_argument(v >= 0, "cmaes_options::", what, " must be >= 0, got ", v);
     if (opt_.x0.size() > 0) {
       check_size(opt_.x0.size(), space_.size(), "cmaes_options::x0");
@@ -182,9 +182,9 @@ class cmaes {
     }
 
     n_ = static_cast<int>(space_.size());
-    const int lambda =
-        opt_.population_size > 0 ? opt_.population_size
-                                 : 4 + static_cast<int>(std::floor(3.0 * std::log(n_)));
+    const int lambda = opt_.population_size > 0
+                           ? opt_.population_size
+                           : 4 + static_cast<int>(std::floor(3.0 * std::log(n_)));
     p_ = cmaes_parameters::make(n_, lambda, opt_.active, opt_.eigen_gap);
     max_iterations_ =
         opt_.stop.max_iterations > 0
@@ -267,9 +267,8 @@ class cmaes {
       const double f = values[static_cast<std::size_t>(k)];
       const bool finite = std::isfinite(f);
       if (!finite) ++non_finite_;
-      fitness_[static_cast<std::size_t>(k)] =
-          finite ? f + penalty_[static_cast<std::size_t>(k)]
-                 : std::numeric_limits<double>::infinity();
+      fitness_[static_cast<std::size_t>(k)] = finite ? f + penalty_[static_cast<std::size_t>(k)]
+                                                     : std::numeric_limits<double>::infinity();
       if (finite) {
         finite_values_.push_back(f);
         if (!(f >= best_value_)) {  // also true while best_value_ is NaN (nothing yet)
@@ -306,7 +305,8 @@ class cmaes {
     // h_sigma stall ([T] p. 31 footnote): 1 unless ||p_sigma|| is large after correcting for its
     // initialization at zero.
     const double ps_corr =
-        ps_norm / std::sqrt(1.0 - std::pow(1.0 - p_.c_sigma, 2.0 * static_cast<double>(iteration_)));
+        ps_norm /
+        std::sqrt(1.0 - std::pow(1.0 - p_.c_sigma, 2.0 * static_cast<double>(iteration_)));
     const bool h_sigma = ps_corr < (1.4 + 2.0 / (n + 1.0)) * p_.chi_n;
     pc_ = (1.0 - p_.c_c) * pc_ +
           (h_sigma ? std::sqrt(p_.c_c * (2.0 - p_.c_c) * p_.mu_eff) : 0.0) * y_w;  // Eq. (45)
@@ -356,8 +356,8 @@ class cmaes {
       s.iteration_best = finite_values_.front();
       s.iteration_worst = finite_values_.back();
       const std::size_t m = finite_values_.size();
-      s.iteration_median = m % 2 ? finite_values_[m / 2]
-                                 : 0.5 * (finite_values_[m / 2 - 1] + finite_values_[m / 2]);
+      s.iteration_median =
+          m % 2 ? finite_values_[m / 2] : 0.5 * (finite_values_[m / 2 - 1] + finite_values_[m / 2]);
     }
     s.step_size = sigma_;
     s.axis_ratio = D_.maxCoeff() / D_.minCoeff();
@@ -365,8 +365,8 @@ class cmaes {
     s.batch_size = p_.lambda;
     double frac = static_cast<double>(iteration_) / static_cast<double>(max_iterations_);
     if (opt_.stop.max_evaluations > 0)
-      frac = std::max(frac, static_cast<double>(evaluations_) /
-                                static_cast<double>(opt_.stop.max_evaluations));
+      frac = std::max(
+          frac, static_cast<double>(evaluations_) / static_cast<double>(opt_.stop.max_evaluations));
     s.budget_fraction = std::min(1.0, frac);
     s.stopped = stopped_;
     return s;
@@ -457,14 +457,16 @@ class cmaes {
 
  private:
   void decompose() {
-    // Symmetrize (the rank-mu product is symmetric only up to rounding) and decompose C = B D^2 B^T.
+    // Symmetrize (the rank-mu product is symmetric only up to rounding) and decompose C = B D^2
+    // B^T.
     C_ = 0.5 * (C_ + C_.transpose()).eval();
     Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> es(C_);
     Eigen::VectorXd ev = es.eigenvalues();
     if (!(ev.minCoeff() > 0.0) || !ev.allFinite()) {
       // Numerically lost positive definiteness (cannot happen in exact arithmetic with the
       // alpha_posdef^- limit): lift the spectrum, as pycma does.
-      const double lift = -std::min(0.0, ev.minCoeff()) + std::max(1e-300, D_.minCoeff() * D_.minCoeff());
+      const double lift =
+          -std::min(0.0, ev.minCoeff()) + std::max(1e-300, D_.minCoeff() * D_.minCoeff());
       C_.diagonal().array() += lift;
       ev.array() += lift;
     }
@@ -482,14 +484,15 @@ class cmaes {
     if (!std::isnan(best_value_) && best_value_ <= t.target_value) set(sc::target_value);
     if (t.max_evaluations > 0 && evaluations_ >= t.max_evaluations) set(sc::max_evaluations);
     if (iteration_ >= max_iterations_) set(sc::max_iterations);
-    if (t.no_improvement_iterations > 0 && iteration_ - last_improvement_ >= t.no_improvement_iterations)
+    if (t.no_improvement_iterations > 0 &&
+        iteration_ - last_improvement_ >= t.no_improvement_iterations)
       set(sc::no_improvement);
     if (opt_.tol_mean_change > 0 && mean_change_ < opt_.tol_mean_change) set(sc::mean_change);
     if (opt_.tol_fun > 0 && best_history_.size() >= tolfun_window_ && !finite_values_.empty() &&
         finite_values_.size() == static_cast<std::size_t>(p_.lambda)) {
       const auto [lo, hi] = std::minmax_element(best_history_.begin(), best_history_.end());
-      const double range = std::max(*hi, finite_values_.back()) -
-                           std::min(*lo, finite_values_.front());
+      const double range =
+          std::max(*hi, finite_values_.back()) - std::min(*lo, finite_values_.front());
       if (range < opt_.tol_fun) set(sc::tol_fun);
     }
     if (opt_.tol_x > 0) {
@@ -508,8 +511,7 @@ class cmaes {
       if ((shifted.array() == mean_.array()).all()) set(sc::no_effect_axis);
     }
     if (opt_.no_effect_coordinate) {
-      const Eigen::VectorXd shifted =
-          mean_ + 0.2 * sigma_ * C_.diagonal().cwiseAbs().cwiseSqrt();
+      const Eigen::VectorXd shifted = mean_ + 0.2 * sigma_ * C_.diagonal().cwiseAbs().cwiseSqrt();
       if ((shifted.array() == mean_.array()).any()) set(sc::no_effect_coordinate);
     }
   }

@@ -32,6 +32,8 @@ class checkpoint_reader;
 /// Something callable as `double(const Eigen::VectorXd& x)` with x in user (unnormalized)
 /// coordinates. Evaluators may call it from several threads at once: making concurrent calls safe
 /// (no shared mutable state, or per-thread workspaces) is the caller's responsibility.
+// (clang-format 14 mangles concept definitions)
+// clang-format off
 template <class F>
 concept objective_function = std::invocable<F&, const Eigen::VectorXd&> &&
     std::convertible_to<std::invoke_result_t<F&, const Eigen::VectorXd&>, double>;
@@ -45,6 +47,7 @@ concept evaluator = objective_function<F> &&
     requires(E& e, F& f, std::span<const Eigen::VectorXd> xs, std::span<double> out) {
       e.evaluate(f, xs, out);
     };
+// clang-format on
 
 /// Why an optimizer stopped (checked after every tell, in the order listed in the documentation).
 enum class stop_criterion : std::uint8_t {
@@ -60,27 +63,41 @@ enum class stop_criterion : std::uint8_t {
   tol_up_sigma,      ///< CMA-ES: sigma * max(D) grew by more than a factor (divergence)
   no_effect_axis,    ///< CMA-ES: a 0.1-sigma step along a principal axis leaves the mean unchanged
   no_effect_coordinate,  ///< CMA-ES: a 0.2-sigma step in a coordinate leaves the mean unchanged
-  min_step,          ///< SDS: step size alpha shrank below its minimum
-  callback,          ///< the per-iteration callback asked to stop
+  min_step,              ///< SDS: step size alpha shrank below its minimum
+  callback,              ///< the per-iteration callback asked to stop
 };
 
 /// Stable lower-case name of a criterion (used in logs, the progress line and checkpoints).
 constexpr std::string_view to_string(stop_criterion c) {
   switch (c) {
-    case stop_criterion::none: return "none";
-    case stop_criterion::max_iterations: return "max_iterations";
-    case stop_criterion::max_evaluations: return "max_evaluations";
-    case stop_criterion::target_value: return "target_value";
-    case stop_criterion::no_improvement: return "no_improvement";
-    case stop_criterion::mean_change: return "mean_change";
-    case stop_criterion::tol_fun: return "tol_fun";
-    case stop_criterion::tol_x: return "tol_x";
-    case stop_criterion::condition_number: return "condition_number";
-    case stop_criterion::tol_up_sigma: return "tol_up_sigma";
-    case stop_criterion::no_effect_axis: return "no_effect_axis";
-    case stop_criterion::no_effect_coordinate: return "no_effect_coordinate";
-    case stop_criterion::min_step: return "min_step";
-    case stop_criterion::callback: return "callback";
+    case stop_criterion::none:
+      return "none";
+    case stop_criterion::max_iterations:
+      return "max_iterations";
+    case stop_criterion::max_evaluations:
+      return "max_evaluations";
+    case stop_criterion::target_value:
+      return "target_value";
+    case stop_criterion::no_improvement:
+      return "no_improvement";
+    case stop_criterion::mean_change:
+      return "mean_change";
+    case stop_criterion::tol_fun:
+      return "tol_fun";
+    case stop_criterion::tol_x:
+      return "tol_x";
+    case stop_criterion::condition_number:
+      return "condition_number";
+    case stop_criterion::tol_up_sigma:
+      return "tol_up_sigma";
+    case stop_criterion::no_effect_axis:
+      return "no_effect_axis";
+    case stop_criterion::no_effect_coordinate:
+      return "no_effect_coordinate";
+    case stop_criterion::min_step:
+      return "min_step";
+    case stop_criterion::callback:
+      return "callback";
   }
   return "unknown";
 }
@@ -102,12 +119,12 @@ struct termination_options {
 struct optimizer_status {
   std::int64_t iteration = 0;    ///< iterations done (over all restarts)
   std::int64_t evaluations = 0;  ///< objective evaluations done (over all restarts)
-  double best_value = std::numeric_limits<double>::quiet_NaN();  ///< best so far (NaN: none)
+  double best_value = std::numeric_limits<double>::quiet_NaN();        ///< best so far (NaN: none)
   double iteration_best = std::numeric_limits<double>::quiet_NaN();    ///< of the last batch
   double iteration_median = std::numeric_limits<double>::quiet_NaN();  ///< finite values only
   double iteration_worst = std::numeric_limits<double>::quiet_NaN();   ///< finite values only
   double step_size = std::numeric_limits<double>::quiet_NaN();  ///< sigma (CMA-ES) / alpha (SDS)
-  double axis_ratio = 1.0;  ///< sqrt(condition number of C) (CMA-ES); 1 for SDS
+  double axis_ratio = 1.0;      ///< sqrt(condition number of C) (CMA-ES); 1 for SDS
   std::int64_t non_finite = 0;  ///< non-finite objective values seen so far
   int restart = 0;              ///< index of the current run (0: first run)
   int batch_size = 0;           ///< candidates per ask in the current run (lambda for CMA-ES)
@@ -123,6 +140,7 @@ struct optimizer_status {
 ///  - `stopped()` is stop_criterion::none while the optimizer wants to continue;
 ///  - `save`/`load` write and read the full state, including random number generators, so a run
 ///    resumed from a checkpoint continues bit-identically.
+// clang-format off
 template <class O>
 concept optimizer = requires(O& o, const O& co, std::span<const double> values,
                              checkpoint_writer& w, checkpoint_reader& r) {
@@ -137,5 +155,6 @@ concept optimizer = requires(O& o, const O& co, std::span<const double> values,
   co.save(w);
   o.load(r);
 };
+// clang-format on
 
 }  // namespace gaitsynth

@@ -47,7 +47,7 @@ struct run_options {
 };
 
 struct optimization_result {
-  Eigen::VectorXd x;  ///< best point seen, user coordinates
+  Eigen::VectorXd x;                                        ///< best point seen, user coordinates
   double value = std::numeric_limits<double>::quiet_NaN();  ///< its objective value
   stop_criterion stopped = stop_criterion::none;            ///< why the run ended
   std::int64_t iterations = 0;
@@ -78,9 +78,13 @@ inline std::string csv_escape(const std::string& s) {
 inline std::string format_seconds(double s) {
   char buf[32];
   if (!std::isfinite(s)) return "?";
-  if (s < 60) std::snprintf(buf, sizeof buf, "%.1fs", s);
-  else if (s < 3600) std::snprintf(buf, sizeof buf, "%dm%02ds", static_cast<int>(s / 60), static_cast<int>(s) % 60);
-  else std::snprintf(buf, sizeof buf, "%dh%02dm", static_cast<int>(s / 3600), static_cast<int>(s / 60) % 60);
+  if (s < 60)
+    std::snprintf(buf, sizeof buf, "%.1fs", s);
+  else if (s < 3600)
+    std::snprintf(buf, sizeof buf, "%dm%02ds", static_cast<int>(s / 60), static_cast<int>(s) % 60);
+  else
+    std::snprintf(buf, sizeof buf, "%dh%02dm", static_cast<int>(s / 3600),
+                  static_cast<int>(s / 60) % 60);
   return buf;
 }
 
@@ -92,7 +96,8 @@ inline constexpr const char* csv_header =
     "step_size,axis_ratio,batch_size,non_finite,elapsed_s";
 
 /// The compact progress line, e.g.
-/// `cmaes  it 120  ev 1200  best 1.234e-05  med 2.10e-05  step 3.2e-03  axis 12.3  1.2s  left ~3.4s`
+/// `cmaes  it 120  ev 1200  best 1.234e-05  med 2.10e-05  step 3.2e-03  axis 12.3  1.2s  left
+/// ~3.4s`
 inline std::string progress_line(std::string_view name, const optimizer_status& s, double elapsed) {
   char buf[256];
   double left = std::numeric_limits<double>::quiet_NaN();
@@ -115,11 +120,13 @@ inline std::string progress_line(std::string_view name, const optimizer_status& 
 /// `callback(const optimizer_status&)` is called after each iteration; if it returns bool, false
 /// stops the run with stop_criterion::callback. Exceptions from the objective propagate (the last
 /// checkpoint stays on disk, so the run can be resumed).
+// clang-format off
 template <class O, class F, class E, class Callback = no_callback>
   requires optimizer<std::remove_cvref_t<O>> &&
            evaluator<std::remove_cvref_t<E>, std::remove_reference_t<F>>
 optimization_result minimize(O&& opt, F&& objective, E&& eval, const run_options& ro = {},
                              Callback&& callback = {}) {
+  // clang-format on
   using clock = std::chrono::steady_clock;
   const auto t0 = clock::now();
   auto elapsed = [&] { return std::chrono::duration<double>(clock::now() - t0).count(); };
@@ -146,8 +153,9 @@ optimization_result minimize(O&& opt, F&& objective, E&& eval, const run_options
   auto write_row = [&](const optimizer_status& s, double t) {
     if (!log.is_open()) return;
     char buf[512];
-    std::snprintf(buf, sizeof buf, "%d,%d,%lld,%lld,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%d,%lld,%.3f",
-                  ro.stage, s.restart, static_cast<long long>(s.iteration),
+    std::snprintf(buf, sizeof buf,
+                  "%d,%d,%lld,%lld,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%d,%lld,%.3f", ro.stage,
+                  s.restart, static_cast<long long>(s.iteration),
                   static_cast<long long>(s.evaluations), s.best_value, s.iteration_best,
                   s.iteration_median, s.iteration_worst, s.step_size, s.axis_ratio, s.batch_size,
                   static_cast<long long>(s.non_finite), t);
@@ -191,7 +199,8 @@ optimization_result minimize(O&& opt, F&& objective, E&& eval, const run_options
     }
     if (by_callback) break;
   }
-  if (!ro.checkpoint_file.empty() && ro.checkpoint_every > 0) save_checkpoint(opt, ro.checkpoint_file);
+  if (!ro.checkpoint_file.empty() && ro.checkpoint_every > 0)
+    save_checkpoint(opt, ro.checkpoint_file);
 
   result.x = opt.best_x();
   result.value = opt.best_value();
@@ -205,10 +214,12 @@ optimization_result minimize(O&& opt, F&& objective, E&& eval, const run_options
 }
 
 /// minimize with the serial evaluator.
+// clang-format off
 template <class O, class F, class Callback = no_callback>
   requires optimizer<std::remove_cvref_t<O>> && objective_function<std::remove_reference_t<F>>
 optimization_result minimize(O&& opt, F&& objective, const run_options& ro = {},
                              Callback&& callback = {}) {
+  // clang-format on
   serial_evaluator e;
   return minimize(std::forward<O>(opt), std::forward<F>(objective), e, ro,
                   std::forward<Callback>(callback));

@@ -11,7 +11,8 @@
 ///                  scale = upper - lower by default when both bounds are finite (so u in [0, 1]),
 ///                  else a user-given scale (default 1);
 ///   - logarithmic: x = lower * (upper / lower)^u, u in [0, 1]; needs 0 < lower < upper < inf
-///                  (for gains spanning decades, where equal ratios should be equally easy to reach).
+///                  (for gains spanning decades, where equal ratios should be equally easy to
+///                  reach).
 #include <Eigen/Core>
 
 #include <algorithm>
@@ -72,8 +73,10 @@ class parameter_space {
       check_argument(p.lower > 0.0 && std::isfinite(p.upper), label,
                      ": logarithmic scaling needs 0 < lower < upper < inf, got [", p.lower, ", ",
                      p.upper, "]");
-      check_argument(p.scale == 0.0, label, ": scale must be 0 (automatic) for logarithmic "
-                     "scaling, got ", p.scale);
+      check_argument(p.scale == 0.0, label,
+                     ": scale must be 0 (automatic) for logarithmic "
+                     "scaling, got ",
+                     p.scale);
       m.log = true;
       m.offset = std::log(p.lower);
       m.scale = std::log(p.upper) - std::log(p.lower);
@@ -111,8 +114,7 @@ class parameter_space {
     check_size(initial.size(), lower.size(), "parameter_space::box initial");
     parameter_space s;
     for (Eigen::Index i = 0; i < lower.size(); ++i)
-      s.add({indexed_name(i), lower[i], upper[i], initial[i], 0.0,
-             parameter_scaling::linear});
+      s.add({indexed_name(i), lower[i], upper[i], initial[i], 0.0, parameter_scaling::linear});
     return s;
   }
 

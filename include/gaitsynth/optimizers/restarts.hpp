@@ -39,7 +39,7 @@ enum class restart_strategy { none, ipop, bipop };
 
 struct restart_options {
   restart_strategy strategy = restart_strategy::ipop;
-  int max_restarts = 9;            ///< restarts after the first run (large-population runs for BIPOP)
+  int max_restarts = 9;  ///< restarts after the first run (large-population runs for BIPOP)
   double population_factor = 2.0;  ///< lambda multiplier per (large) restart
   /// Restart from a uniformly random mean in the initial region (the normalized bounds where
   /// finite, else initial mean +- 2 sigma0) instead of the initial mean.
@@ -192,10 +192,10 @@ class cmaes_restarts {
       // current large lambda, sigma0 scaled by 10^(-2U).
       large = false;
       const double u = detail::uniform01(rng_);
-      const double large_lambda =
-          lambda0_ * std::pow(ro_.population_factor, large_restarts_);
-      lambda = std::max(2, static_cast<int>(std::floor(
-                               lambda0_ * std::pow(0.5 * large_lambda / lambda0_, u * u))));
+      const double large_lambda = lambda0_ * std::pow(ro_.population_factor, large_restarts_);
+      lambda = std::max(
+          2,
+          static_cast<int>(std::floor(lambda0_ * std::pow(0.5 * large_lambda / lambda0_, u * u))));
       o.sigma0 = base_.sigma0 * std::pow(10.0, -2.0 * detail::uniform01(rng_));
       const std::int64_t cap = std::max<std::int64_t>(1, last_large_evals_ / 2);
       o.stop.max_iterations = std::max<std::int64_t>(1, cap / lambda);

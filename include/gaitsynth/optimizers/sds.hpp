@@ -2,10 +2,10 @@
 /// \file sds.hpp
 /// SDS, the simple deterministic search (coordinate search) of Sharon & van de Panne 2005,
 /// Sec. IV and Fig. 2: for each free parameter i in turn, evaluate C(theta + alpha Delta_i e_i)
-/// and C(theta - alpha Delta_i e_i); if the better of the two improves on C(theta), move theta there
-/// at once (greedy hill climbing, the next coordinate starts from the new theta). When a whole
-/// sweep over the parameters finds no improvement, shrink alpha (coarse to fine: alpha *= shrink)
-/// and sweep again; stop when alpha < min_step or a budget is used up. Torczon 1997 (their
+/// and C(theta - alpha Delta_i e_i); if the better of the two improves on C(theta), move theta
+/// there at once (greedy hill climbing, the next coordinate starts from the new theta). When a
+/// whole sweep over the parameters finds no improvement, shrink alpha (coarse to fine: alpha *=
+/// shrink) and sweep again; stop when alpha < min_step or a budget is used up. Torczon 1997 (their
 /// reference [17]) gives the convergence theory of this class of pattern searches.
 ///
 /// Conventions shared with CMA-ES: the search runs in the normalized coordinates of a
@@ -155,8 +155,8 @@ class sds {
       s.iteration_best = batch_values_.front();
       s.iteration_worst = batch_values_.back();
       const std::size_t m = batch_values_.size();
-      s.iteration_median = m % 2 ? batch_values_[m / 2]
-                                 : 0.5 * (batch_values_[m / 2 - 1] + batch_values_[m / 2]);
+      s.iteration_median =
+          m % 2 ? batch_values_[m / 2] : 0.5 * (batch_values_[m / 2 - 1] + batch_values_[m / 2]);
     }
     s.step_size = alpha_;
     s.axis_ratio = 1.0;

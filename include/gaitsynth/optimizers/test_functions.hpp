@@ -15,7 +15,9 @@
 
 namespace gaitsynth::test_functions {
 
-inline double sphere(const Eigen::VectorXd& x) { return x.squaredNorm(); }
+inline double sphere(const Eigen::VectorXd& x) {
+  return x.squaredNorm();
+}
 
 /// sum_i 10^(6 i / (n - 1)) x_i^2 (condition number 1e6).
 inline double ellipsoid(const Eigen::VectorXd& x) {
@@ -79,17 +81,13 @@ struct rotated_ellipsoid {
   Eigen::MatrixXd rotation;
   explicit rotated_ellipsoid(Eigen::Index n, std::uint64_t seed = 12345)
       : rotation(random_rotation(n, seed)) {}
-  double operator()(const Eigen::VectorXd& x) const {
-    return ellipsoid(rotation * x);
-  }
+  double operator()(const Eigen::VectorXd& x) const { return ellipsoid(rotation * x); }
 };
 
 /// sum_i (x_i - c)^2.
 struct shifted_sphere {
   double center = 0.9;
-  double operator()(const Eigen::VectorXd& x) const {
-    return (x.array() - center).square().sum();
-  }
+  double operator()(const Eigen::VectorXd& x) const { return (x.array() - center).square().sum(); }
 };
 
 }  // namespace gaitsynth::test_functions
