@@ -9,25 +9,30 @@ bookkeeping a user would otherwise do with a ruler: the root position of each ke
 that the named stance-foot point (heel or toe) rests on the ground at the given x, and the stride
 (`advance`) is the one that keeps the trailing toe planted across the mirror-image wrap.
 
-Geometry: the 7-link human of Table I (thigh 0.46 m, shin 0.44 m, foot 0.22 m, ankle at the heel
-end). The 16-link human uses its own leg lengths (passed in). Run:  python3 author_keyframes.py
+Geometry: the 7-link human of Table I (thigh 0.46 m, shin 0.44 m, foot 0.22 m through the ankle at
+the sole, heel a quarter of the foot behind the ankle, as models/sharon2005.hpp builds it). The 16-link human uses its own leg lengths (passed in). Run:  python3 author_keyframes.py
 """
 import json
 import math
 import os
 
 HERE = os.path.dirname(os.path.abspath(__file__))
+HEEL_FRACTION = 0.25  # heel behind the ankle, fraction of the foot length (models/sharon2005.hpp)
 
 
 def leg(root, pitch, hip, knee, foot, L):
+    """World heel, toe and the ankle angle of one leg (the foot runs through the ankle at the sole,
+    its heel HEEL_FRACTION of its length behind the ankle, as in models/sharon2005.hpp)."""
     th, sh, ft = L
     a = math.radians(pitch + hip)
     k = (root[0] - th * math.sin(a), root[1] - th * math.cos(a))
     b = math.radians(pitch + hip + knee)
     an = (k[0] - sh * math.sin(b), k[1] - sh * math.cos(b))
     f = math.radians(foot)
-    toe = (an[0] + ft * math.cos(f), an[1] - ft * math.sin(f))
-    return an, toe, foot - (pitch + hip + knee)
+    back, front = HEEL_FRACTION * ft, (1 - HEEL_FRACTION) * ft
+    heel = (an[0] - back * math.cos(f), an[1] + back * math.sin(f))
+    toe = (an[0] + front * math.cos(f), an[1] - front * math.sin(f))
+    return heel, toe, foot - (pitch + hip + knee)
 
 
 def place(pitch, R, L, anchor, lengths, ground_slope_deg=0.0):
@@ -94,7 +99,7 @@ H7 = (0.46, 0.44, 0.22)
 build("normal_walk.keyframes.json", "sharon2005_human7",
       "Normal walk of the 7-link human (Sharon & van de Panne 2005, Figure 5a), one step listed; "
       "the next step is its mirror image.", "5a",
-      [(0.00, 4, (-19, 3, -5), (14, 20, 25), ("r", "heel", 0.0)),
+      [(0.00, 4, (-19, 3, -5), (14, 14, 22), ("r", "heel", 0.0)),
        (0.13, 4, (-13, 12, 0), (2, 45, 40), ("r", "heel", 0.0)),
        (0.27, 4, (-1, 5, 0), (-20, 55, 15), ("r", "heel", 0.0)),
        (0.41, 4, (11, 3, 10), (-26, 12, -3), ("r", "toe", 0.22))],

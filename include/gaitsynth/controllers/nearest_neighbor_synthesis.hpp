@@ -19,11 +19,14 @@
 #include <chrono>
 #include <cmath>
 #include <cstdint>
+#include <limits>
+#include <type_traits>
 #include <iostream>
 #include <string>
 #include <utility>
 #include <vector>
 
+#include "gaitsynth/controllers/keyframes.hpp"
 #include "gaitsynth/controllers/nearest_neighbor.hpp"
 #include "gaitsynth/error.hpp"
 #include "gaitsynth/optimizers/continuation.hpp"
@@ -47,6 +50,10 @@ struct nn_problem {
   Terrain ground;
   Integrator integrator;
   rollout_options options;  ///< its duration is replaced by the horizon of each evaluation
+  /// Start states of the cost (empty: options.initial_state alone). The paper evaluates from one
+  /// state, the first keyframe; its section VII suggests "multiple states that are distributed
+  /// along the desired trajectory" (target_start_states below) for robustness.
+  std::vector<sim_state> starts = {};
 
   /// The controller with parameter vector x bound.
   nearest_neighbor_controller<Root> controller_with(const Eigen::VectorXd& x) const {
@@ -58,9 +65,25 @@ struct nn_problem {
   /// One rollout of `horizon` seconds with parameters x (optionally recorded).
   rollout_result evaluate(const Eigen::VectorXd& x, double horizon, trajectory* record = nullptr,
                           int record_every = 1) const {
+    return evaluate_from(options.initial_state, x, horizon, record, record_every);
+  }
+
+  /// The optimization cost: the sum of the objective over the start states, each rollout `horizon`
+  /// seconds long. A diverged rollout makes it +infinity.
+  double cost(const Eigen::VectorXd& x, double horizon) const {
+    if (starts.empty()) return evaluate(x, horizon).cost;
+    double c = 0.0;
+    for (const sim_state& s : starts) c += evaluate_from(s, x, horizon).cost;
+    return c;
+  }
+
+  /// One rollout from start state s (its t is the target motion's time).
+  rollout_result evaluate_from(const sim_state& s, const Eigen::VectorXd& x, double horizon,
+                               trajectory* record = nullptr, int record_every = 1) const {
     auto c = controller;
     auto integ = integrator;
     rollout_options o = options;
+    o.initial_state = s;
     o.duration = horizon;
     o.record = record;
     o.record_every = record_every;
@@ -152,7 +175,7 @@ nn_synthesis_result synthesize_nearest_neighbor(const Problem& prob, nn_synthesi
       },
       [&](std::size_t k) {
         const double T = o.horizons[k];
-        return [&prob, T](const Eigen::VectorXd& x) { return prob.evaluate(x, T).cost; };
+        return [&prob, T](const Eigen::VectorXd& x) { return prob.cost(x, T); };
       },
       pool, o.run);
   res.wall_seconds =
@@ -161,6 +184,33 @@ nn_synthesis_result synthesize_nearest_neighbor(const Problem& prob, nn_synthesi
   res.value = res.episodes.value;
   for (const auto& s : res.episodes.stages) res.evaluations += s.evaluations;
   return res;
+}
+
+/// States on the target motion at the given times (pose and velocity of the keyframe motion, with
+/// s.t = time so the objective compares against the target from there on), each lowered or raised
+/// so that its lowest contact point touches the terrain.
+template <root_joint Root, terrain Terrain>
+std::vector<sim_state> target_start_states(const model<Root>& m, const keyframe_motion<Root>& target,
+                                           const Terrain& ground, const std::vector<double>& times) {
+  std::vector<sim_state> out;
+  auto ws = make_workspace(m);
+  for (double t : times) {
+    sim_state s;
+    s.q.resize(m.nq());
+    s.v.resize(m.nv());
+    target.pose(t, s.q);
+    target.velocity(t, s.v);
+    s.t = t;
+    forward_kinematics(m, ws, s.q);
+    double gap = std::numeric_limits<double>::infinity();
+    for (const auto& c : m.contact_points) {
+      const vec3 p = point_position(m, ws, c.body, c.position);
+      gap = std::min(gap, p.z() - ground.height(p.x(), p.y()));
+    }
+    if (std::isfinite(gap)) s.q[std::is_same_v<Root, planar_root> ? 1 : 2] -= gap;
+    out.push_back(std::move(s));
+  }
+  return out;
 }
 
 /// How a controller fares in a long test rollout (the paper's 70 s test).

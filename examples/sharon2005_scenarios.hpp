@@ -1,0 +1,109 @@
+#pragma once
+// The experiments of Sharon & van de Panne 2005 as data, shared by the examples/sharon2005_*.cpp
+// programs and the tests in tests/sharon2005/ (so a test checks exactly what an example runs).
+//
+// Figure 8 (robustness of the unmodified normal-walk controller): (a) torso mass 40 -> 28 kg,
+// (b) shin 0.44 -> 0.25 m with thigh 0.46 -> 0.6 m, (c) shin 0.44 -> 0.8 m, (d) bumpy terrain
+// with gradients up to 11 degrees, walked blindly (the controller senses nothing of it).
+#include <Eigen/Core>
+#include <cmath>
+#include <algorithm>
+#include <cstdint>
+#include <numbers>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "gaitsynth/contact/height_field_terrain.hpp"
+#include "gaitsynth/controllers/keyframes.hpp"
+#include "gaitsynth/dynamics/kinematics.hpp"
+#include "gaitsynth/models/sharon2005.hpp"
+
+namespace sharon_scenarios {
+
+/// A planar bumpy profile along x (a height field with one row, which planar models query at
+/// y = 0): a sum of sinusoids of wavelengths 1.5 to 6 m (by default) with seeded random phases and amplitudes,
+/// sampled every 5 cm and scaled so that its steepest gradient is exactly max_slope_deg; flat (and
+/// blended in over 1 m) before x = flat_until so that the walk starts on level ground.
+inline gaitsynth::height_field_terrain bumpy_terrain(double max_slope_deg = 11.0,
+                                                     std::uint64_t seed = 2005,
+                                                     double min_wavelength = 1.5,
+                                                     double max_wavelength = 6.0,
+                                                     double length = 120.0,
+                                                     double flat_until = 1.0) {
+  const double spacing = 0.05, x0 = -5.0;
+  const int n = static_cast<int>(std::ceil(length / spacing)) + 1;
+  std::mt19937_64 rng(seed);
+  auto uniform = [&] { return static_cast<double>(rng() >> 11) * 0x1.0p-53; };
+  constexpr int waves = 6;
+  double lambda[waves], phase[waves], amp[waves];
+  for (int k = 0; k < waves; ++k) {
+    lambda[k] = min_wavelength + (max_wavelength - min_wavelength) * uniform();
+    phase[k] = 2.0 * std::numbers::pi * uniform();
+    amp[k] = (0.5 + uniform()) * lambda[k];  // longer waves are higher: similar slopes
+  }
+  Eigen::MatrixXd h = Eigen::MatrixXd::Zero(n, 1);
+  for (int i = 0; i < n; ++i) {
+    const double x = x0 + spacing * i;
+    double y = 0.0;
+    for (int k = 0; k < waves; ++k) y += amp[k] * std::sin(2.0 * std::numbers::pi * x / lambda[k] + phase[k]);
+    const double blend = std::clamp(x - flat_until, 0.0, 1.0);
+    h(i, 0) = blend * blend * (3.0 - 2.0 * blend) * y;  // smoothstep from flat ground
+  }
+  h.array() -= h(0, 0);
+  double g = 0.0;
+  for (int i = 1; i < n; ++i) g = std::max(g, std::abs(h(i, 0) - h(i - 1, 0)) / spacing);
+  h *= std::tan(max_slope_deg * std::numbers::pi / 180.0) / g;
+  return gaitsynth::height_field_terrain(Eigen::Vector2d(x0, 0.0), spacing, h);
+}
+
+/// Largest |gradient| of the profile, degrees (for reports and tests).
+inline double max_gradient_deg(const gaitsynth::height_field_terrain& t, double x_begin,
+                               double x_end) {
+  double m = 0.0;
+  for (double x = x_begin; x <= x_end; x += 0.01) {
+    const gaitsynth::vec3 n = t.normal(x, 0.0);
+    m = std::max(m, std::atan2(std::hypot(n.x(), n.y()), n.z()));
+  }
+  return m * 180.0 / std::numbers::pi;
+}
+
+struct body_variant {
+  std::string name;
+  std::string description;
+  gaitsynth::sharon2005_human7_parameters params;
+};
+
+/// Figure 8 (a)-(c). Inertias follow the changed masses and lengths (Table I's are rod inertias).
+inline std::vector<body_variant> figure8_bodies() {
+  std::vector<body_variant> v;
+  gaitsynth::sharon2005_human7_parameters a;
+  a.torso_mass = 28.0;
+  v.push_back({"torso_28kg", "Fig. 8a: torso mass 40 -> 28 kg", a.with_rod_inertias()});
+  gaitsynth::sharon2005_human7_parameters b;
+  b.shin_length = 0.25;
+  b.thigh_length = 0.6;
+  v.push_back({"shin_0.25_thigh_0.6", "Fig. 8b: shin 0.44 -> 0.25 m, thigh 0.46 -> 0.6 m",
+               b.with_rod_inertias()});
+  gaitsynth::sharon2005_human7_parameters c;
+  c.shin_length = 0.8;
+  v.push_back({"shin_0.8", "Fig. 8c: shin 0.44 -> 0.8 m", c.with_rod_inertias()});
+  return v;
+}
+
+/// The start state for a changed body: the target's first pose and velocity (joint angles and
+/// rates as keyframed), with the root lowered or raised so that the lowest foot point touches the
+/// ground, as for the original body.
+inline gaitsynth::sim_state start_state_for(const gaitsynth::planar_model& m,
+                                            const gaitsynth::keyframe_motion<gaitsynth::planar_root>& target) {
+  gaitsynth::sim_state s = target.initial_state();
+  auto ws = gaitsynth::make_workspace(m);
+  gaitsynth::forward_kinematics(m, ws, s.q);
+  double lowest = 1e300;
+  for (const auto& c : m.contact_points)
+    lowest = std::min(lowest, gaitsynth::point_position(m, ws, c.body, c.position).z());
+  s.q[1] -= lowest;
+  return s;
+}
+
+}  // namespace sharon_scenarios
