@@ -224,7 +224,7 @@ inline floating_model build_humanoid30(const humanoid30_spec& sp) {
     const Eigen::Vector3d foot_size(Lft - Ltoe, wf, ha);
     const Eigen::Vector3d foot_c(0.5 * (heel_x + mtp_x), 0, -0.5 * ha);
     std::vector<shape> foot_shapes{box(foot_c, 0.5 * foot_size)};
-    const double rc = 0.4 * ha;  // heel and ball cylinder radius (cylinders style)
+    const double rc = 0.3 * ha;  // heel and ball cylinder radius (cylinders style)
     if (sp.feet == foot_contact_style::cylinders)
       for (const double cx : {heel_x + rc, mtp_x - rc})
         foot_shapes.push_back(
@@ -260,7 +260,7 @@ inline floating_model build_humanoid30(const humanoid30_spec& sp) {
       b.add_contact_point({S + "foot_ball_lat", S + "foot", {mtp_x, lat, -ha}, ck::sole});
       b.add_contact_point({S + "foot_ball_med", S + "foot", {mtp_x, med, -ha}, ck::sole});
     } else {
-      // Heel and ball cylinders (axis y, radius 0.4 ankle height) tangent to the sole plane; each
+      // Heel and ball cylinders (axis y, radius 0.3 ankle height) tangent to the sole plane; each
       // is sampled at three points of its lower arc (-45, 0, +45 deg from straight down) at both
       // ends so that the foot can roll on them.
       const std::array<double, 3> angles{-45.0 * deg, 0.0, 45.0 * deg};
