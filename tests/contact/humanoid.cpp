@@ -1,6 +1,6 @@
-// The Wang et al. 2009 humanoids (every Fig. 8 body shape) standing for 1.5 s on their 16 foot and toe
-// contact points with the default contact parameters at 2400 Hz: the simulation stays finite and
-// bounded, the character stays up, and both feet keep >= 3 points on the ground (the paper's
+// The Wang et al. 2009 humanoids (every Fig. 8 body shape) standing for 1.5 s on their 16 foot and
+// toe contact points with the default contact parameters at 2400 Hz: the simulation stays finite
+// and bounded, the character stays up, and both feet keep >= 3 points on the ground (the paper's
 // "firmly planted"). With the plain explicit damper the same set-up diverges (the toes are light).
 #include <catch2/catch.hpp>
 
