@@ -9,6 +9,7 @@
 #include <Eigen/Core>
 #include <algorithm>
 #include <cmath>
+#include <string>
 #include <utility>
 
 #include <Eigen/Cholesky>
@@ -136,5 +137,26 @@ struct pd_actuator {
     }
   }
 };
+
+/// PD servos that hold a biped in a standing pose at timestep dt (tests, benchmarks, demos):
+/// kp = 1000 N m/rad at hips, knees, ankles and back (above the m g h ~ 600 N m/rad a 70 kg
+/// body toppling about its ankles needs), 20 at toes (Wang et al. 2009 Table 2), 100 elsewhere
+/// (neck, arms), kd = 0.1 kp (Table 2), then capped for stability (pd_actuator::capped). DOFs are
+/// recognized by name ("hip", "knee", "ankle", "back", "toe"), as the built-in characters name
+/// them; `scale` multiplies every gain before the caps.
+template <root_joint Root>
+pd_actuator standing_pd(const model<Root>& m, double dt, double scale = 1.0) {
+  check_positive(scale, "standing_pd: scale");
+  Eigen::VectorXd kp(m.num_joint_dofs());
+  for (int j = 0; j < m.num_joint_dofs(); ++j) {
+    const std::string& n = m.dofs[j].name;
+    auto has = [&](const char* s) { return n.find(s) != std::string::npos; };
+    kp[j] = has("toe")                                                   ? 20.0
+            : (has("hip") || has("knee") || has("ankle") || has("back")) ? 1000.0
+                                                                         : 100.0;
+  }
+  kp *= scale;
+  return pd_actuator::capped(m, kp, 0.1 * kp, dt);
+}
 
 }  // namespace gaitsynth

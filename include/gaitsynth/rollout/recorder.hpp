@@ -91,6 +91,7 @@ class trajectory_recorder {
   bool due(std::int64_t k) const {
     return tr_ != nullptr && k % every_ == 0 && count_ < tr_->frames.size();
   }
+  bool has_room() const { return tr_ != nullptr && count_ < tr_->frames.size(); }
   /// The next frame to fill (call only when due()).
   trajectory_frame& next() { return tr_->frames[count_++]; }
 

@@ -142,24 +142,15 @@ inline std::int64_t horizon_steps(double duration, double dt) {
 
 }  // namespace detail
 
-/// Runs one rollout. See the file comment for the step order and result.hpp for the cost
-/// convention. \throws std::invalid_argument for a bad timestep, duration, option, initial state,
-/// or parameter vector (wrong size, NaN), naming the value. A diverging or falling rollout is a
-/// result, not an exception.
-template <root_joint Root, class Actuator, class Controller, class Objective, terrain Terrain,
+namespace detail {
+/// The rollout itself (rollout() below forwards here with a mutable controller).
+template <root_joint Root, class Actuator, class C, class Objective, terrain Terrain,
           class Integrator>
-requires actuator<Actuator, Root> &&
-    controller<std::remove_cvref_t<Controller>, Root,
-               sensors_with<Root, typename Actuator::state_type>> &&
-    objective<Objective, Root, step_view_with<Root, typename Actuator::state_type>> &&
-    integrator<std::remove_cvref_t<Integrator>, Root>
-        rollout_result rollout(const model<Root>& m, const Actuator& act, Controller&& ctrl,
-                               const Objective& obj, const Terrain& ground, Integrator&& integ,
-                               std::span<const double> params, const rollout_options& opt,
-                               rollout_scratch<Root>& scr) {
-  using C = std::remove_cvref_t<Controller>;
+rollout_result rollout_impl(const model<Root>& m, const Actuator& act, C& ctrl,
+                            const Objective& obj, const Terrain& ground, Integrator& integ,
+                            std::span<const double> params, const rollout_options& opt,
+                            rollout_scratch<Root>& scr) {
   using actuator_state = typename Actuator::state_type;
-
   // ---------------------------------------------------------------- set-up (may allocate/throw)
   check_positive(opt.dt, "rollout_options::dt (physics timestep, s)");
   check_argument(std::isfinite(opt.duration) && opt.duration >= 0.0,
@@ -290,7 +281,36 @@ requires actuator<Actuator, Root> &&
     ddq = aba(m, ws, q, v, scr.tau_total);
   };
 
-  // ---------------------------------------------------------------- the step loop (no allocation)
+  // Fills the next trajectory frame with the state at step k_rec (kinematics current).
+  std::int64_t last_recorded = -1;
+  auto record_frame = [&](std::int64_t k_rec, double t) {
+    last_recorded = k_rec;
+    trajectory_frame& f = rec.next();
+    f.t = t;
+    f.q = s.q;
+    f.v = s.v;
+    f.tau = scr.tau;
+    for (int b = 0; b < m.num_bodies(); ++b) {
+      f.body_position[b] = ws.body_position[b];
+      f.body_orientation[b] = Eigen::Quaterniond(ws.body_rotation[b]);
+    }
+    f.com = res.com_final;
+    for (std::size_t c = 0; c < m.contact_points.size(); ++c) {
+      const auto& cp = m.contact_points[c];
+      f.contact_position[c] = point_position(m, ws, cp.body, cp.position);
+      f.contact_force[c] = scr.contacts.force[c];
+      f.contact_active[c] = scr.contacts.active[c];
+    }
+    f.pushes.clear();
+    for (const push& p : opt.pushes)
+      if (p.active(t)) f.pushes.emplace_back(p.body, p.force);
+    if constexpr (objective_with_terms<Objective>)
+      obj.terms(acc, std::span<double>(f.objective_terms));
+    if constexpr (controller_with_discrete_state<C>)
+      f.controller_state = ctrl.discrete_state(ctrl_state);
+  };
+
+  // ---------------------------------------------------------------- the step loop: no allocation
   std::int64_t k = 0, calls = 0, next_call = 0;
   stop_reason reason = stop_reason::horizon;
   vec3 com = res.com_initial, com_v = vec3::Zero();
@@ -338,31 +358,7 @@ requires actuator<Actuator, Root> &&
     view.com_velocity = com_v;
     view.toe_top_contact = scr.contacts.any_toe_top_touching;
     obj.accumulate(acc, static_cast<const step_view_with<Root, actuator_state>&>(view));
-    if (rec.due(k)) {
-      trajectory_frame& f = rec.next();
-      f.t = t;
-      f.q = s.q;
-      f.v = s.v;
-      f.tau = scr.tau;
-      for (int b = 0; b < m.num_bodies(); ++b) {
-        f.body_position[b] = ws.body_position[b];
-        f.body_orientation[b] = Eigen::Quaterniond(ws.body_rotation[b]);
-      }
-      f.com = com;
-      for (std::size_t c = 0; c < m.contact_points.size(); ++c) {
-        const auto& cp = m.contact_points[c];
-        f.contact_position[c] = point_position(m, ws, cp.body, cp.position);
-        f.contact_force[c] = scr.contacts.force[c];
-        f.contact_active[c] = scr.contacts.active[c];
-      }
-      f.pushes.clear();
-      for (const push& p : opt.pushes)
-        if (p.active(t)) f.pushes.emplace_back(p.body, p.force);
-      if constexpr (objective_with_terms<Objective>)
-        obj.terms(acc, std::span<double>(f.objective_terms));
-      if constexpr (controller_with_discrete_state<C>)
-        f.controller_state = ctrl.discrete_state(ctrl_state);
-    }
+    if (rec.due(k)) record_frame(k, t);
     if constexpr (objective_with_done<Objective>) {
       if (obj.done(acc)) {
         reason = stop_reason::objective;
@@ -391,6 +387,9 @@ requires actuator<Actuator, Root> &&
   res.time = static_cast<double>(k) * dt;
   s.t = t0 + res.time;
   res.controller_calls = calls;
+  // The state the rollout stopped in is the last frame (a fall ends on the ground).
+  if (rec.enabled() && rec.has_room() && reason != stop_reason::non_finite && last_recorded != k)
+    record_frame(k, t0 + res.time);
   rec.finish(ground);
   if (reason == stop_reason::non_finite) {
     res.cost = failed_rollout_cost;
@@ -406,6 +405,37 @@ requires actuator<Actuator, Root> &&
   res.objective_value = static_cast<double>(obj.finish(std::as_const(acc), out));
   res.cost = std::isnan(res.objective_value) ? failed_rollout_cost : res.objective_value;
   return res;
+}
+}  // namespace detail
+
+/// Runs one rollout. See the file comment for the step order and result.hpp for the cost
+/// convention. The controller is bound to `params` in place (pass one controller per thread); a
+/// const controller is copied first. \throws std::invalid_argument for a bad timestep, duration,
+/// option, initial state, or parameter vector (wrong size, NaN), naming the value. A diverging or
+/// falling rollout is a result, not an exception.
+template <root_joint Root, class Actuator, class Controller, class Objective, terrain Terrain,
+          class Integrator>
+requires actuator<Actuator, Root> &&
+    controller<std::remove_cvref_t<Controller>, Root,
+               sensors_with<Root, typename Actuator::state_type>> &&
+    objective<Objective, Root, step_view_with<Root, typename Actuator::state_type>> &&
+    integrator<std::remove_cvref_t<Integrator>, Root>
+        rollout_result rollout(const model<Root>& m, const Actuator& act, Controller&& ctrl,
+                               const Objective& obj, const Terrain& ground, Integrator&& integ,
+                               std::span<const double> params, const rollout_options& opt,
+                               rollout_scratch<Root>& scr) {
+  using C = std::remove_cvref_t<Controller>;
+  using I = std::remove_cvref_t<Integrator>;
+  if constexpr (std::is_const_v<std::remove_reference_t<Controller>> ||
+                std::is_const_v<std::remove_reference_t<Integrator>>) {
+    // bind() changes the controller and step() the integrator's scratch: work on copies of
+    // const ones (set-up; may allocate).
+    C c(ctrl);
+    I i(integ);
+    return detail::rollout_impl(m, act, c, obj, ground, i, params, opt, scr);
+  } else {
+    return detail::rollout_impl(m, act, ctrl, obj, ground, integ, params, opt, scr);
+  }
 }
 
 /// Convenience overload for an Eigen parameter vector.
