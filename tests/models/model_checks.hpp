@@ -43,8 +43,8 @@ void check_limit_stability(const gaitsynth::model<Root>& m, double bound = 1.0,
     double k = d.limit.stiffness;
     if (d.limit.model == gaitsynth::limit_model::exponential)
       k = d.limit.stiffness * d.limit.sharpness * std::exp(d.limit.sharpness * overshoot);
-    INFO(m.name << " DOF " << d.name << ": I = " << Ia << ", k = " << k << ", d = "
-                << d.limit.damping);
+    INFO(m.name << " DOF " << d.name << ": I = " << Ia << ", k = " << k
+                << ", d = " << d.limit.damping);
     CHECK(d.limit.model != gaitsynth::limit_model::none);
     CHECK(k * dt * dt / Ia < bound);
     CHECK(d.limit.damping * dt / Ia < bound);

@@ -130,9 +130,9 @@ TEST_CASE("sharon2005_human16 from de Leva's table", "[models][sharon2005]") {
   CHECK(m.name == "sharon2005_human16");
   CHECK(m.num_bodies() == 16);
   CHECK(m.num_joint_dofs() == 15);
-  const char* order[] = {"lhip",  "lknee",     "lankle", "rhip",   "rknee",
-                         "rankle", "back",     "chest",  "neck",   "lshoulder",
-                         "lelbow", "lwrist",   "rshoulder", "relbow", "rwrist"};
+  const char* order[] = {"lhip",   "lknee",  "lankle",    "rhip",   "rknee",
+                         "rankle", "back",   "chest",     "neck",   "lshoulder",
+                         "lelbow", "lwrist", "rshoulder", "relbow", "rwrist"};
   for (int j = 0; j < 15; ++j) {
     CHECK(m.dofs[j].name == order[j]);
     CHECK(m.dofs[j].axis == Eigen::Vector3d::UnitY());

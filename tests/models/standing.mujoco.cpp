@@ -19,8 +19,8 @@ template <class Root>
 void check_stands_in_mujoco(const model<Root>& gm) {
   INFO(gm.name);
   mjcf_options o;
-  o.contact_geoms = true;    // spheres centred at the contact points
-  o.joint_limits = false;    // gaitsynth's limits are soft springs; q = 0 is inside them anyway
+  o.contact_geoms = true;  // spheres centred at the contact points
+  o.joint_limits = false;  // gaitsynth's limits are soft springs; q = 0 is inside them anyway
   o.visual_geoms = false;
   o.keyframe_q = standing_configuration(gm, o.contact_geom_radius);
   // Load the exported text through MuJoCo's virtual file system (no temporary file).

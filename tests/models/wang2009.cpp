@@ -13,6 +13,7 @@ using Catch::Matchers::Contains;
 TEST_CASE("wang2009_humanoid has the paper's 30 DOFs", "[models][wang2009]") {
   const floating_model m = wang2009_humanoid();
   CHECK(m.name == "wang2009_stocky");
+  CHECK(wang2009_humanoid({}).name == "wang2009_stocky");  // {} is the default body, not a preset
   CHECK(m.num_joint_dofs() == 30);
   CHECK(m.nv() == 36);
   CHECK(m.nq() == 37);
@@ -101,9 +102,8 @@ TEST_CASE("wang2009_humanoid mass, geometry and contacts", "[models][wang2009]")
   const body& toe = m.bodies[m.body_index("ltoes")];
   const double foot_len = foot.length + toe.length;
   const double heel_x = foot.shapes[0].center.x() - foot.shapes[0].half_extents.x();
-  const double cx =
-      (foot.mass * foot.com.x() + toe.mass * (toe.joint_offset.x() + toe.com.x())) /
-      (foot.mass + toe.mass);
+  const double cx = (foot.mass * foot.com.x() + toe.mass * (toe.joint_offset.x() + toe.com.x())) /
+                    (foot.mass + toe.mass);
   CHECK((cx - heel_x) / foot_len == Approx(0.4415).margin(0.005));
   CHECK(foot.mass + toe.mass == Approx(70.0 * 0.0137));
 }
@@ -183,8 +183,8 @@ TEST_CASE("wang2009 presets: Figure 8 heights and masses", "[models][wang2009]")
   CHECK(wang2009_preset("long arm").arm_length_scale == 1.5);
   // The long-armed humanoid's arms are longer and heavier; the overweight one's trunk heavier.
   const floating_model la = wang2009_humanoid(wang2009_shape::long_arm);
-  const floating_model ref = wang2009_humanoid(wang2009_preset(wang2009_shape::stocky)
-                                                   .scaled_to(1.27, 65.0));
+  const floating_model ref =
+      wang2009_humanoid(wang2009_preset(wang2009_shape::stocky).scaled_to(1.27, 65.0));
   const auto arm = [](const floating_model& m) {
     return m.bodies[m.body_index("lupper_arm")].mass + m.bodies[m.body_index("llower_arm")].mass;
   };

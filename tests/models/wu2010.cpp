@@ -13,9 +13,9 @@ TEST_CASE("wu2010_biped reproduces Table 3", "[models][wu2010]") {
   CHECK(m.num_bodies() == 8);
   CHECK(m.num_joint_dofs() == 17);
   CHECK(m.nv() == 23);
-  const char* order[] = {"lhip_x",   "lhip_y",   "lhip_z",   "lknee",    "lankle_x", "lankle_y",
-                         "lankle_z", "rhip_x",   "rhip_y",   "rhip_z",   "rknee",    "rankle_x",
-                         "rankle_y", "rankle_z", "waist_x",  "waist_y",  "waist_z"};
+  const char* order[] = {"lhip_x",   "lhip_y",   "lhip_z",  "lknee",   "lankle_x", "lankle_y",
+                         "lankle_z", "rhip_x",   "rhip_y",  "rhip_z",  "rknee",    "rankle_x",
+                         "rankle_y", "rankle_z", "waist_x", "waist_y", "waist_z"};
   for (int j = 0; j < 17; ++j) CHECK(m.dofs[j].name == order[j]);
   // Table 3: mass (kg), principal inertias (kg m^2), length (m), tau_max (N m) of its joint.
   struct row {

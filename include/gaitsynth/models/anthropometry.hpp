@@ -13,12 +13,12 @@
 ///   Where Table 4 gives an alternative landmark pair we use the one whose end points are the joint
 ///   centres of our kinematic chains (head VERT-CERV, upper trunk CERV-XYPH, shank KJC-AJC).
 ///
-/// Axis convention (docs/models.md, "de Leva's axes"): a body frame has x forward (anteroposterior),
-/// y to the left (mediolateral), z up. For upright segments r_sagittal is about the anteroposterior
-/// axis (x), r_transverse about the mediolateral axis (y), r_longitudinal about the long axis (z);
-/// this reading makes the trunk's moment about x (lateral bending, mass spread over the wider
-/// mediolateral extent) the larger one, as the data say. The foot lies along x, so its longitudinal
-/// radius is about x and its sagittal radius about the vertical axis z.
+/// Axis convention (docs/models.md, "de Leva's axes"): a body frame has x forward
+/// (anteroposterior), y to the left (mediolateral), z up. For upright segments r_sagittal is about
+/// the anteroposterior axis (x), r_transverse about the mediolateral axis (y), r_longitudinal about
+/// the long axis (z); this reading makes the trunk's moment about x (lateral bending, mass spread
+/// over the wider mediolateral extent) the larger one, as the data say. The foot lies along x, so
+/// its longitudinal radius is about x and its sagittal radius about the vertical axis z.
 #include <Eigen/Core>
 #include <string_view>
 
@@ -39,29 +39,28 @@ struct segment {
 inline constexpr double reference_stature = 1.741;  ///< m (Table 4, male)
 inline constexpr double reference_mass = 73.0;      ///< kg (Table 4, male)
 
+// clang-format off
 // Landmarks: VERT vertex, CERV cervicale (C7), XYPH xiphion, OMPH omphalion, MIDH mid-point of the
 // hip joint centres, SJC/EJC/WJC/HJC/KJC/AJC shoulder/elbow/wrist/hip/knee/ankle joint centres,
 // MET3 third metacarpale, HEEL heel, TTIP tip of the longest toe.
 inline constexpr segment head{"head", "VERT", "CERV", 242.9, 6.94, 50.02, 30.3, 31.5, 26.1};
-inline constexpr segment upper_trunk{"upper_trunk", "CERV", "XYPH", 242.1, 15.96, 50.66,
-                                     50.5,          32.0,   46.5};
-inline constexpr segment middle_trunk{"middle_trunk", "XYPH", "OMPH", 215.5, 16.33, 45.02,
-                                      48.2,           38.3,   46.8};
-inline constexpr segment lower_trunk{"lower_trunk", "OMPH", "MIDH", 145.7, 11.17, 61.15,
-                                     61.5,          55.1,   58.7};
+inline constexpr segment upper_trunk{"upper_trunk", "CERV", "XYPH", 242.1, 15.96, 50.66, 50.5, 32.0, 46.5};
+inline constexpr segment middle_trunk{"middle_trunk", "XYPH", "OMPH", 215.5, 16.33, 45.02, 48.2, 38.3, 46.8};
+inline constexpr segment lower_trunk{"lower_trunk", "OMPH", "MIDH", 145.7, 11.17, 61.15, 61.5, 55.1, 58.7};
 inline constexpr segment upper_arm{"upper_arm", "SJC", "EJC", 281.7, 2.71, 57.72, 28.5, 26.9, 15.8};
 inline constexpr segment forearm{"forearm", "EJC", "WJC", 268.9, 1.62, 45.74, 27.6, 26.5, 12.1};
 inline constexpr segment hand{"hand", "WJC", "MET3", 86.2, 0.61, 79.00, 62.8, 51.3, 40.1};
 inline constexpr segment thigh{"thigh", "HJC", "KJC", 422.2, 14.16, 40.95, 32.9, 32.9, 14.9};
 inline constexpr segment shank{"shank", "KJC", "AJC", 440.3, 4.33, 43.95, 25.1, 24.6, 10.2};
 inline constexpr segment foot{"foot", "HEEL", "TTIP", 258.1, 1.37, 44.15, 25.7, 24.5, 12.4};
+// clang-format on
 
 /// Sum of the mass percentages of the 16 segments (paired ones twice): 100.00.
 inline constexpr double mass_percent_sum =
     head.mass_percent + upper_trunk.mass_percent + middle_trunk.mass_percent +
     lower_trunk.mass_percent +
-    2.0 * (upper_arm.mass_percent + forearm.mass_percent + hand.mass_percent +
-           thigh.mass_percent + shank.mass_percent + foot.mass_percent);
+    2.0 * (upper_arm.mass_percent + forearm.mass_percent + hand.mass_percent + thigh.mass_percent +
+           shank.mass_percent + foot.mass_percent);
 
 /// Sum of the vertical chain vertex -> CERV -> XYPH -> OMPH -> MIDH -> KJC -> AJC, mm (1708.7).
 inline constexpr double vertical_chain_mm = head.length_mm + upper_trunk.length_mm +

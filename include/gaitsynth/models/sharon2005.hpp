@@ -58,10 +58,10 @@ inline Eigen::Matrix3d rod_inertia(double I, int long_axis) {
 /// The 7-link planar human of Sharon & van de Panne 2005 (Fig. 4a, Table I): torso (root), thighs,
 /// shins and feet; 6 pin joints, all about +y, DOF order lhip, lknee, lankle, rhip, rknee, rankle.
 ///
-/// Geometry (docs/models.md): every link is a uniform rod (COM at its middle; Table I's inertias are
-/// m L^2 / 12). The torso rises from the hip joint (the root origin), the thigh and shin hang below
-/// it, and the foot is a horizontal rod through the ankle from the heel, heel_behind_ankle * L
-/// behind it, to the toe (our choice: with the ankle at the heel the standing COM would be only 7
+/// Geometry (docs/models.md): every link is a uniform rod (COM at its middle; Table I's inertias
+/// are m L^2 / 12). The torso rises from the hip joint (the root origin), the thigh and shin hang
+/// below it, and the foot is a horizontal rod through the ankle from the heel, heel_behind_ankle *
+/// L behind it, to the toe (our choice: with the ankle at the heel the standing COM would be only 7
 /// mm inside the support). Link end points for the mass-distance metric of eq. 2: body origin and
 /// segment_end (the rod's far end; for the foot the ankle and the toe tip). Contact points: heel
 /// (role sole) and toe (role toe) at the ends of each foot. Joint limits are exponential springs
@@ -91,8 +91,8 @@ inline planar_model sharon2005_human7(const sharon2005_human7_parameters& p = {}
   // Exponential limit springs: tau = -k (exp(s * overshoot) - 1) - d qdot past a bound. With
   // k = 10 N m and s = 20 /rad the spring gives 64 N m at 0.1 rad overshoot and 536 N m at 0.2 rad.
   constexpr double k = 10.0, s = 20.0, d = 5.0;
-  const joint_limit hip = exponential_limit(-2.0, 0.7, k, s, d);  // flexion is negative
-  const joint_limit knee = exponential_limit(0.0, 2.5, k, s, d);  // flexion is positive
+  const joint_limit hip = exponential_limit(-2.0, 0.7, k, s, d);    // flexion is negative
+  const joint_limit knee = exponential_limit(0.0, 2.5, k, s, d);    // flexion is positive
   const joint_limit ankle = exponential_limit(-0.6, 0.9, k, s, d);  // plantarflexion positive
   const Eigen::Vector3d Y = Eigen::Vector3d::UnitY();
 
@@ -106,41 +106,45 @@ inline planar_model sharon2005_human7(const sharon2005_human7_parameters& p = {}
               .segment_end = {0, 0, p.torso_length}});
   for (const char* side : {"l", "r"}) {
     const std::string S = side;
-    b.add_body({.name = S + "thigh",
-                .parent = "torso",
-                .mass = p.thigh_mass,
-                .com = {0, 0, -0.5 * p.thigh_length},
-                .inertia = rod_inertia(p.thigh_inertia, 2),
-                .dofs = {{.name = S + "hip", .axis = Y, .limit = hip,
-                          .torque_limit = p.torque_limit}},
-                .shapes = {capsule({0, 0, 0}, {0, 0, -p.thigh_length}, 0.06)},
-                .length = p.thigh_length,
-                .segment_end = {0, 0, -p.thigh_length}});
-    b.add_body({.name = S + "shin",
-                .parent = S + "thigh",
-                .joint_offset = {0, 0, -p.thigh_length},
-                .mass = p.shin_mass,
-                .com = {0, 0, -0.5 * p.shin_length},
-                .inertia = rod_inertia(p.shin_inertia, 2),
-                .dofs = {{.name = S + "knee", .axis = Y, .limit = knee,
-                          .torque_limit = p.torque_limit}},
-                .shapes = {capsule({0, 0, 0}, {0, 0, -p.shin_length}, 0.045)},
-                .length = p.shin_length,
-                .segment_end = {0, 0, -p.shin_length}});
-    b.add_body({.name = S + "foot",
-                .parent = S + "shin",
-                .joint_offset = {0, 0, -p.shin_length},
-                .mass = p.foot_mass,
-                .com = {0.5 * (heel + toe), 0, 0},
-                .inertia = rod_inertia(p.foot_inertia, 0),
-                .dofs = {{.name = S + "ankle", .axis = Y, .limit = ankle,
-                          .torque_limit = p.torque_limit}},
-                .shapes = {capsule({heel, 0, 0}, {toe, 0, 0}, 0.02)},
-                .length = p.foot_length,
-                .segment_end = {toe, 0, 0}});
-    b.add_contact_point({.name = S + "heel", .body = S + "foot", .position = {heel, 0, 0},
+    b.add_body(
+        {.name = S + "thigh",
+         .parent = "torso",
+         .mass = p.thigh_mass,
+         .com = {0, 0, -0.5 * p.thigh_length},
+         .inertia = rod_inertia(p.thigh_inertia, 2),
+         .dofs = {{.name = S + "hip", .axis = Y, .limit = hip, .torque_limit = p.torque_limit}},
+         .shapes = {capsule({0, 0, 0}, {0, 0, -p.thigh_length}, 0.06)},
+         .length = p.thigh_length,
+         .segment_end = {0, 0, -p.thigh_length}});
+    b.add_body(
+        {.name = S + "shin",
+         .parent = S + "thigh",
+         .joint_offset = {0, 0, -p.thigh_length},
+         .mass = p.shin_mass,
+         .com = {0, 0, -0.5 * p.shin_length},
+         .inertia = rod_inertia(p.shin_inertia, 2),
+         .dofs = {{.name = S + "knee", .axis = Y, .limit = knee, .torque_limit = p.torque_limit}},
+         .shapes = {capsule({0, 0, 0}, {0, 0, -p.shin_length}, 0.045)},
+         .length = p.shin_length,
+         .segment_end = {0, 0, -p.shin_length}});
+    b.add_body(
+        {.name = S + "foot",
+         .parent = S + "shin",
+         .joint_offset = {0, 0, -p.shin_length},
+         .mass = p.foot_mass,
+         .com = {0.5 * (heel + toe), 0, 0},
+         .inertia = rod_inertia(p.foot_inertia, 0),
+         .dofs = {{.name = S + "ankle", .axis = Y, .limit = ankle, .torque_limit = p.torque_limit}},
+         .shapes = {capsule({heel, 0, 0}, {toe, 0, 0}, 0.02)},
+         .length = p.foot_length,
+         .segment_end = {toe, 0, 0}});
+    b.add_contact_point({.name = S + "heel",
+                         .body = S + "foot",
+                         .position = {heel, 0, 0},
                          .role = contact_point::kind::sole});
-    b.add_contact_point({.name = S + "toe", .body = S + "foot", .position = {toe, 0, 0},
+    b.add_contact_point({.name = S + "toe",
+                         .body = S + "foot",
+                         .position = {toe, 0, 0},
                          .role = contact_point::kind::toe});
   }
   return b.build();
@@ -175,7 +179,9 @@ inline planar_model sharon2005_human16(const sharon2005_human16_parameters& p = 
   // With the ankle on the sole, the vertical chain vertex..AJC is the whole standing height.
   const double scale = p.height / (dl::vertical_chain_mm * 1e-3);
   const auto len = [&](const dl::segment& s) { return scale * s.length_mm * 1e-3; };
-  const auto mass = [&](const dl::segment& s) { return p.mass * s.mass_percent / dl::mass_percent_sum; };
+  const auto mass = [&](const dl::segment& s) {
+    return p.mass * s.mass_percent / dl::mass_percent_sum;
+  };
   // COM along an upright segment from its lower end, given de Leva's COM from its upper landmark.
   const auto com_up = [&](const dl::segment& s) { return len(s) * (1.0 - 0.01 * s.com_percent); };
   const auto com_down = [&](const dl::segment& s) { return -len(s) * 0.01 * s.com_percent; };
@@ -204,76 +210,83 @@ inline planar_model sharon2005_human16(const sharon2005_human16_parameters& p = 
   const double heel = -0.25 * Lft, toe = heel + Lft;
   for (const char* side : {"l", "r"}) {
     const std::string S = side;
-    b.add_body({.name = S + "thigh",
-                .parent = "pelvis",
-                .mass = mass(dl::thigh),
-                .com = {0, 0, com_down(dl::thigh)},
-                .inertia = dl::upright_inertia(dl::thigh, mass(dl::thigh), Lth),
-                .dofs = {{.name = S + "hip", .axis = Y, .limit = lim(-2.0, 0.7, 10, 5),
-                          .torque_limit = T}},
-                .shapes = {capsule({0, 0, 0}, {0, 0, -Lth}, 0.07)},
-                .length = Lth,
-                .segment_end = {0, 0, -Lth}});
-    b.add_body({.name = S + "shin",
-                .parent = S + "thigh",
-                .joint_offset = {0, 0, -Lth},
-                .mass = mass(dl::shank),
-                .com = {0, 0, com_down(dl::shank)},
-                .inertia = dl::upright_inertia(dl::shank, mass(dl::shank), Lsh),
-                .dofs = {{.name = S + "knee", .axis = Y, .limit = lim(0.0, 2.5, 10, 5),
-                          .torque_limit = T}},
-                .shapes = {capsule({0, 0, 0}, {0, 0, -Lsh}, 0.05)},
-                .length = Lsh,
-                .segment_end = {0, 0, -Lsh}});
-    b.add_body({.name = S + "foot",
-                .parent = S + "shin",
-                .joint_offset = {0, 0, -Lsh},
-                .mass = mass(dl::foot),
-                .com = {heel + 0.01 * dl::foot.com_percent * Lft, 0, 0},
-                .inertia = dl::foot_inertia(mass(dl::foot), Lft),
-                .dofs = {{.name = S + "ankle", .axis = Y, .limit = lim(-0.6, 0.9, 10, 2),
-                          .torque_limit = T}},
-                .shapes = {capsule({heel, 0, 0}, {toe, 0, 0}, 0.025)},
-                .length = Lft,
-                .segment_end = {toe, 0, 0}});
-    b.add_contact_point({.name = S + "heel", .body = S + "foot", .position = {heel, 0, 0},
+    b.add_body(
+        {.name = S + "thigh",
+         .parent = "pelvis",
+         .mass = mass(dl::thigh),
+         .com = {0, 0, com_down(dl::thigh)},
+         .inertia = dl::upright_inertia(dl::thigh, mass(dl::thigh), Lth),
+         .dofs =
+             {{.name = S + "hip", .axis = Y, .limit = lim(-2.0, 0.7, 10, 5), .torque_limit = T}},
+         .shapes = {capsule({0, 0, 0}, {0, 0, -Lth}, 0.07)},
+         .length = Lth,
+         .segment_end = {0, 0, -Lth}});
+    b.add_body(
+        {.name = S + "shin",
+         .parent = S + "thigh",
+         .joint_offset = {0, 0, -Lth},
+         .mass = mass(dl::shank),
+         .com = {0, 0, com_down(dl::shank)},
+         .inertia = dl::upright_inertia(dl::shank, mass(dl::shank), Lsh),
+         .dofs =
+             {{.name = S + "knee", .axis = Y, .limit = lim(0.0, 2.5, 10, 5), .torque_limit = T}},
+         .shapes = {capsule({0, 0, 0}, {0, 0, -Lsh}, 0.05)},
+         .length = Lsh,
+         .segment_end = {0, 0, -Lsh}});
+    b.add_body(
+        {.name = S + "foot",
+         .parent = S + "shin",
+         .joint_offset = {0, 0, -Lsh},
+         .mass = mass(dl::foot),
+         .com = {heel + 0.01 * dl::foot.com_percent * Lft, 0, 0},
+         .inertia = dl::foot_inertia(mass(dl::foot), Lft),
+         .dofs =
+             {{.name = S + "ankle", .axis = Y, .limit = lim(-0.6, 0.9, 10, 2), .torque_limit = T}},
+         .shapes = {capsule({heel, 0, 0}, {toe, 0, 0}, 0.025)},
+         .length = Lft,
+         .segment_end = {toe, 0, 0}});
+    b.add_contact_point({.name = S + "heel",
+                         .body = S + "foot",
+                         .position = {heel, 0, 0},
                          .role = contact_point::kind::sole});
-    b.add_contact_point({.name = S + "toe", .body = S + "foot", .position = {toe, 0, 0},
+    b.add_contact_point({.name = S + "toe",
+                         .body = S + "foot",
+                         .position = {toe, 0, 0},
                          .role = contact_point::kind::toe});
   }
-  b.add_body({.name = "abdomen",
-              .parent = "pelvis",
-              .joint_offset = {0, 0, Llpt},
-              .mass = mass(dl::middle_trunk),
-              .com = {0, 0, com_up(dl::middle_trunk)},
-              .inertia = dl::upright_inertia(dl::middle_trunk, mass(dl::middle_trunk), Lmpt),
-              .dofs = {{.name = "back", .axis = Y, .limit = lim(-0.5, 0.8, 10, 5),
-                        .torque_limit = T}},
-              .shapes = {box({0, 0, 0.5 * Lmpt}, {0.08, 0.13, 0.5 * Lmpt})},
-              .length = Lmpt,
-              .segment_end = {0, 0, Lmpt}});
-  b.add_body({.name = "thorax",
-              .parent = "abdomen",
-              .joint_offset = {0, 0, Lmpt},
-              .mass = mass(dl::upper_trunk),
-              .com = {0, 0, com_up(dl::upper_trunk)},
-              .inertia = dl::upright_inertia(dl::upper_trunk, mass(dl::upper_trunk), Lupt),
-              .dofs = {{.name = "chest", .axis = Y, .limit = lim(-0.3, 0.5, 10, 5),
-                        .torque_limit = T}},
-              .shapes = {box({0, 0, 0.5 * Lupt}, {0.09, 0.16, 0.5 * Lupt})},
-              .length = Lupt,
-              .segment_end = {0, 0, Lupt}});
-  b.add_body({.name = "head",
-              .parent = "thorax",
-              .joint_offset = {0, 0, Lupt},
-              .mass = mass(dl::head),
-              .com = {0, 0, com_up(dl::head)},
-              .inertia = dl::upright_inertia(dl::head, mass(dl::head), Lhead),
-              .dofs = {{.name = "neck", .axis = Y, .limit = lim(-0.8, 0.8, 5, 1),
-                        .torque_limit = 50.0}},
-              .shapes = {sphere({0, 0, 0.62 * Lhead}, 0.38 * Lhead)},
-              .length = Lhead,
-              .segment_end = {0, 0, Lhead}});
+  b.add_body(
+      {.name = "abdomen",
+       .parent = "pelvis",
+       .joint_offset = {0, 0, Llpt},
+       .mass = mass(dl::middle_trunk),
+       .com = {0, 0, com_up(dl::middle_trunk)},
+       .inertia = dl::upright_inertia(dl::middle_trunk, mass(dl::middle_trunk), Lmpt),
+       .dofs = {{.name = "back", .axis = Y, .limit = lim(-0.5, 0.8, 10, 5), .torque_limit = T}},
+       .shapes = {box({0, 0, 0.5 * Lmpt}, {0.08, 0.13, 0.5 * Lmpt})},
+       .length = Lmpt,
+       .segment_end = {0, 0, Lmpt}});
+  b.add_body(
+      {.name = "thorax",
+       .parent = "abdomen",
+       .joint_offset = {0, 0, Lmpt},
+       .mass = mass(dl::upper_trunk),
+       .com = {0, 0, com_up(dl::upper_trunk)},
+       .inertia = dl::upright_inertia(dl::upper_trunk, mass(dl::upper_trunk), Lupt),
+       .dofs = {{.name = "chest", .axis = Y, .limit = lim(-0.3, 0.5, 10, 5), .torque_limit = T}},
+       .shapes = {box({0, 0, 0.5 * Lupt}, {0.09, 0.16, 0.5 * Lupt})},
+       .length = Lupt,
+       .segment_end = {0, 0, Lupt}});
+  b.add_body(
+      {.name = "head",
+       .parent = "thorax",
+       .joint_offset = {0, 0, Lupt},
+       .mass = mass(dl::head),
+       .com = {0, 0, com_up(dl::head)},
+       .inertia = dl::upright_inertia(dl::head, mass(dl::head), Lhead),
+       .dofs = {{.name = "neck", .axis = Y, .limit = lim(-0.8, 0.8, 5, 1), .torque_limit = 50.0}},
+       .shapes = {sphere({0, 0, 0.62 * Lhead}, 0.38 * Lhead)},
+       .length = Lhead,
+       .segment_end = {0, 0, Lhead}});
   // Shoulder joint centre 0.06 height below cervicale (docs/models.md).
   const double shoulder_z = Lupt - 0.06 * p.height;
   const double Lua = len(dl::upper_arm), Lfa = len(dl::forearm), Lha = len(dl::hand);
@@ -285,7 +298,9 @@ inline planar_model sharon2005_human16(const sharon2005_human16_parameters& p = 
                 .mass = mass(dl::upper_arm),
                 .com = {0, 0, com_down(dl::upper_arm)},
                 .inertia = dl::upright_inertia(dl::upper_arm, mass(dl::upper_arm), Lua),
-                .dofs = {{.name = S + "shoulder", .axis = Y, .limit = lim(-3.0, 1.0, 5, 1),
+                .dofs = {{.name = S + "shoulder",
+                          .axis = Y,
+                          .limit = lim(-3.0, 1.0, 5, 1),
                           .torque_limit = 100.0}},
                 .shapes = {capsule({0, 0, 0}, {0, 0, -Lua}, 0.045)},
                 .length = Lua,
@@ -296,7 +311,9 @@ inline planar_model sharon2005_human16(const sharon2005_human16_parameters& p = 
                 .mass = mass(dl::forearm),
                 .com = {0, 0, com_down(dl::forearm)},
                 .inertia = dl::upright_inertia(dl::forearm, mass(dl::forearm), Lfa),
-                .dofs = {{.name = S + "elbow", .axis = Y, .limit = lim(-2.6, 0.0, 3, 0.5),
+                .dofs = {{.name = S + "elbow",
+                          .axis = Y,
+                          .limit = lim(-2.6, 0.0, 3, 0.5),
                           .torque_limit = 60.0}},
                 .shapes = {capsule({0, 0, 0}, {0, 0, -Lfa}, 0.035)},
                 .length = Lfa,
@@ -307,7 +324,9 @@ inline planar_model sharon2005_human16(const sharon2005_human16_parameters& p = 
                 .mass = mass(dl::hand),
                 .com = {0, 0, com_down(dl::hand)},
                 .inertia = dl::upright_inertia(dl::hand, mass(dl::hand), Lha),
-                .dofs = {{.name = S + "wrist", .axis = Y, .limit = lim(-1.2, 1.2, 1, 0.1),
+                .dofs = {{.name = S + "wrist",
+                          .axis = Y,
+                          .limit = lim(-1.2, 1.2, 1, 0.1),
                           .torque_limit = 20.0}},
                 .shapes = {capsule({0, 0, 0}, {0, 0, -Lha}, 0.03)},
                 .length = Lha,

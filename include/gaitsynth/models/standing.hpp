@@ -50,8 +50,8 @@ double standing_height(const model<Root>& m) {
 /// is at height `ground` (m): the character stands on flat ground at z = ground, feet flat.
 template <root_joint Root>
 Eigen::VectorXd standing_configuration(const model<Root>& m, double ground = 0.0) {
-  check_argument(std::isfinite(ground), "standing_configuration: ground height must be finite, got ",
-                 ground);
+  check_argument(std::isfinite(ground),
+                 "standing_configuration: ground height must be finite, got ", ground);
   Eigen::VectorXd q = neutral_configuration(m);
   const double z = ground - neutral_lowest_contact(m);
   if constexpr (Root::nq == 3) q[1] = z;  // planar: [x, z, pitch]

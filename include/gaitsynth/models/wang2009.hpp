@@ -20,6 +20,7 @@
 /// Several DOFs of one joint compose in the listed order (x, then y, then z) about the joint
 /// centre. Left/right DOFs about x and z have mirror sign -1 (model.mirror_sign).
 #include <array>
+#include <concepts>
 #include <string>
 #include <string_view>
 
@@ -31,12 +32,12 @@ namespace gaitsynth {
 /// Body shape of the Wang 2009 humanoid. height and mass are the standing height (sole to vertex)
 /// and total mass; the scales re-weight de Leva's proportions (1 = de Leva).
 struct wang2009_body {
-  std::string name = "stocky";   ///< also the model's name suffix
-  double height = 1.65;          ///< m
-  double mass = 70.0;            ///< kg
-  double arm_length_scale = 1.0; ///< upper arm, forearm and hand lengths
-  double arm_mass_scale = 1.0;   ///< weight of the arm segments' mass percentages
-  double trunk_mass_scale = 1.0; ///< weight of the three trunk segments' mass percentages
+  std::string name = "stocky";    ///< also the model's name suffix
+  double height = 1.65;           ///< m
+  double mass = 70.0;             ///< kg
+  double arm_length_scale = 1.0;  ///< upper arm, forearm and hand lengths
+  double arm_mass_scale = 1.0;    ///< weight of the arm segments' mass percentages
+  double trunk_mass_scale = 1.0;  ///< weight of the three trunk segments' mass percentages
 
   /// A copy with another height and mass (proportions kept).
   wang2009_body scaled_to(double new_height, double new_mass) const {
@@ -62,7 +63,10 @@ inline constexpr std::array<wang2009_shape, 6> wang2009_shapes{
 inline wang2009_body wang2009_preset(wang2009_shape s) {
   switch (s) {
     case wang2009_shape::long_arm:
-      return {.name = "long_arm", .height = 1.27, .mass = 65.0, .arm_length_scale = 1.5,
+      return {.name = "long_arm",
+              .height = 1.27,
+              .mass = 65.0,
+              .arm_length_scale = 1.5,
               .arm_mass_scale = 2.5};
     case wang2009_shape::thin:
       return {.name = "thin", .height = 1.65, .mass = 41.0};
@@ -86,9 +90,9 @@ inline wang2009_body wang2009_preset(std::string_view name) {
     if (name == b.name) return b;
   }
   if (name == "long arm") return wang2009_preset(wang2009_shape::long_arm);
-  throw std::invalid_argument(detail::concat(
-      "wang2009_preset: unknown body shape '", name,
-      "' (expected long arm, thin, short, stocky, overweight or tall)"));
+  throw std::invalid_argument(
+      detail::concat("wang2009_preset: unknown body shape '", name,
+                     "' (expected long arm, thin, short, stocky, overweight or tall)"));
 }
 
 /// The Wang 2009 humanoid with body shape `body` (default: "stocky", 165 cm, 70 kg, the character
@@ -106,8 +110,10 @@ inline floating_model wang2009_humanoid(const wang2009_body& body = {}) {
   return detail::characters::build_humanoid30(sp);
 }
 
-/// Convenience: the preset `s` (wang2009_humanoid(wang2009_preset(s))).
-inline floating_model wang2009_humanoid(wang2009_shape s) {
+/// Convenience: the preset `s` (wang2009_humanoid(wang2009_preset(s))). A template so that
+/// wang2009_humanoid({}) still means the default body, not the enum's first value.
+template <std::same_as<wang2009_shape> Shape>
+floating_model wang2009_humanoid(Shape s) {
   return wang2009_humanoid(wang2009_preset(s));
 }
 

@@ -15,7 +15,8 @@
 /// Geyer & Herr soft limits (0.3 N m/deg = 17.19 N m/rad past the bound): ankle between 20 deg of
 /// dorsiflexion and 40 deg of plantarflexion (their 70..130 deg shank-foot angle), knee
 /// hyperextension beyond 5 deg of flexion (175 deg), hip extension beyond 50 deg (230 deg). Their
-/// velocity factor (1 - dphi/omega_max) is not a linear damper; we use 1 N m s/rad (docs/models.md).
+/// velocity factor (1 - dphi/omega_max) is not a linear damper; we use 1 N m s/rad
+/// (docs/models.md).
 #include "gaitsynth/models/detail/humanoid30.hpp"
 
 namespace gaitsynth {

@@ -10,10 +10,10 @@
 ///   shank       4.352, (0.04, 0.04, 0.01)   0.55           spherical (ankle)   400
 ///   foot        1,     (0.03, 0.001, 0.03)  0.25
 /// Each row's joint is the one at the link's distal end (the upper body, the paper's root, ends in
-/// the spherical waist; the knee is revolute, Section 7 "inverted knees"). The hip row's joint cells
-/// are empty in the table: we make the hips spherical with 700 N m, the knee's limit. Total mass
-/// 76.608 kg. Everything the table leaves out (joint placement, foot geometry, COMs, ranges) is our
-/// choice and listed in docs/models.md.
+/// the spherical waist; the knee is revolute, Section 7 "inverted knees"). The hip row's joint
+/// cells are empty in the table: we make the hips spherical with 700 N m, the knee's limit. Total
+/// mass 76.608 kg. Everything the table leaves out (joint placement, foot geometry, COMs, ranges)
+/// is our choice and listed in docs/models.md.
 ///
 /// floating_model with the hip link (pelvis) as the root body, origin at its centre; the dynamics
 /// do not depend on which body is the root. Frames x forward, y left, z up. DOF order (17):
@@ -36,24 +36,24 @@ namespace gaitsynth {
 inline floating_model wu2010_biped() {
   using namespace detail::characters;
   // Geometry not in Table 3 (docs/models.md).
-  constexpr double hip_radius = 0.15;       // Table 3
-  constexpr double hip_half_width = 0.1;    // ours: hip joints inside the hip sphere
+  constexpr double hip_radius = 0.15;     // Table 3
+  constexpr double hip_half_width = 0.1;  // ours: hip joints inside the hip sphere
   constexpr double thigh = 0.5, shank = 0.55, upper = 0.8, foot_len = 0.25;  // Table 3
-  constexpr double ankle_height = 0.06, foot_width = 0.1;  // ours
-  constexpr double heel_x = -0.06;           // ours: heel 6 cm behind the ankle
+  constexpr double ankle_height = 0.06, foot_width = 0.1;                    // ours
+  constexpr double heel_x = -0.06;               // ours: heel 6 cm behind the ankle
   constexpr double box_len = 0.1, box_h = 0.03;  // ours: heel and toe boxes, 5 cm gap (Fig. 9)
   const double toe_x0 = heel_x + foot_len - box_len;
 
   // Soft limits at Wu's size scale like the 30-DOF humanoid's (k, d proportional to mass
   // height^2; reference 70 kg, 1.75 m); standing height here is 0.06 + 0.55 + 0.5 + 0.8 = 1.91 m.
   const double M = 76.608, H = ankle_height + shank + thigh + upper;
-  const double k_scale = (M / reference_limit_mass) * (H / reference_limit_height) *
-                         (H / reference_limit_height);
+  const double k_scale =
+      (M / reference_limit_mass) * (H / reference_limit_height) * (H / reference_limit_height);
   const auto sided = [&](const dof_row& r, const std::string& S, bool right, double tau_max) {
     Eigen::Vector3d axis = Eigen::Vector3d::Zero();
     axis[r.axis] = 1.0;
-    joint_limit L = spring_damper_limit(r.lower, r.upper, r.stiffness * k_scale,
-                                        r.damping * k_scale);
+    joint_limit L =
+        spring_damper_limit(r.lower, r.upper, r.stiffness * k_scale, r.damping * k_scale);
     if (right) L = mirrored_limit(L, axis);
     return dof_spec{.name = S + r.name, .axis = axis, .limit = L, .torque_limit = tau_max};
   };

@@ -18,19 +18,19 @@ namespace gaitsynth::detail::characters {
 
 /// Proportions of the humanoid (all fractions are of the standing height H unless noted).
 struct humanoid30_proportions {
-  double ankle_height = 0.039;        ///< ankle joint centre above the sole (Drillis-Contini, in Winter)
-  double foot_width = 0.055;          ///< foot breadth (Drillis-Contini, in Winter)
-  double hip_half_width = 0.05;       ///< hip joint centre from the mid-line
-  double shoulder_half_width = 0.105; ///< shoulder joint centre from the mid-line
-  double shoulder_drop = 0.06;        ///< shoulder joint centre below cervicale
-  double heel_behind_ankle = 0.25;    ///< heel behind the ankle, fraction of foot length
-  double toe_fraction = 0.27;         ///< toe segment (MTP joint to tip), fraction of foot length
-  double toe_height = 0.5;            ///< toe box height, fraction of ankle height
+  double ankle_height = 0.039;   ///< ankle joint centre above the sole (Drillis-Contini, in Winter)
+  double foot_width = 0.055;     ///< foot breadth (Drillis-Contini, in Winter)
+  double hip_half_width = 0.05;  ///< hip joint centre from the mid-line
+  double shoulder_half_width = 0.105;  ///< shoulder joint centre from the mid-line
+  double shoulder_drop = 0.06;         ///< shoulder joint centre below cervicale
+  double heel_behind_ankle = 0.25;     ///< heel behind the ankle, fraction of foot length
+  double toe_fraction = 0.27;          ///< toe segment (MTP joint to tip), fraction of foot length
+  double toe_height = 0.5;             ///< toe box height, fraction of ankle height
 };
 
 enum class foot_contact_style {
-  box,        ///< foot and toe are boxes; 4 bottom corners each (Wang et al. 2009)
-  cylinders   ///< heel and ball cylinders under the foot (Wang et al. 2012); toe box as above
+  box,       ///< foot and toe are boxes; 4 bottom corners each (Wang et al. 2009)
+  cylinders  ///< heel and ball cylinders under the foot (Wang et al. 2012); toe box as above
 };
 
 struct humanoid30_spec {
@@ -47,15 +47,15 @@ struct humanoid30_spec {
 
 /// Soft-limit and torque-limit table of one (left-side) DOF at the reference body (70 kg, 1.75 m).
 struct dof_row {
-  const char* name;  ///< without the l/r prefix for sided DOFs
-  int axis;          ///< 0 x, 1 y, 2 z
-  double lower, upper;   ///< rad (left side)
-  double stiffness;      ///< N m / rad at the reference body
-  double damping;        ///< N m s / rad at the reference body
-  double torque_limit;   ///< N m at the reference body
+  const char* name;     ///< without the l/r prefix for sided DOFs
+  int axis;             ///< 0 x, 1 y, 2 z
+  double lower, upper;  ///< rad (left side)
+  double stiffness;     ///< N m / rad at the reference body
+  double damping;       ///< N m s / rad at the reference body
+  double torque_limit;  ///< N m at the reference body
 };
 
-inline constexpr double reference_limit_mass = 70.0;   // kg
+inline constexpr double reference_limit_mass = 70.0;    // kg
 inline constexpr double reference_limit_height = 1.75;  // m
 
 // Ranges: typical active ranges of motion of adults (docs/models.md), signs by the right-hand rule
@@ -68,18 +68,17 @@ inline constexpr std::array<dof_row, 3> back_rows{{{"back_x", 0, -0.5, 0.5, 1000
 inline constexpr std::array<dof_row, 3> neck_rows{{{"neck_x", 0, -0.7, 0.7, 200, 5, 50},
                                                    {"neck_y", 1, -0.9, 1.0, 200, 5, 50},
                                                    {"neck_z", 2, -1.2, 1.2, 200, 5, 50}}};
-inline constexpr std::array<dof_row, 3> shoulder_rows{
-    {{"shoulder_x", 0, -0.5, 2.8, 200, 2, 100},
-     {"shoulder_y", 1, -3.0, 1.0, 200, 2, 100},
-     {"shoulder_z", 2, -1.5, 1.5, 200, 2, 100}}};
-inline constexpr std::array<dof_row, 2> elbow_rows{{{"elbow_y", 1, -2.6, 0.0, 100, 1, 60},
-                                                    {"elbow_z", 2, -1.4, 1.4, 100, 1, 60}}};
+inline constexpr std::array<dof_row, 3> shoulder_rows{{{"shoulder_x", 0, -0.5, 2.8, 200, 2, 100},
+                                                       {"shoulder_y", 1, -3.0, 1.0, 200, 2, 100},
+                                                       {"shoulder_z", 2, -1.5, 1.5, 200, 2, 100}}};
+inline constexpr std::array<dof_row, 2> elbow_rows{
+    {{"elbow_y", 1, -2.6, 0.0, 100, 1, 60}, {"elbow_z", 2, -1.4, 1.4, 100, 1, 60}}};
 inline constexpr std::array<dof_row, 3> hip_rows{{{"hip_x", 0, -0.5, 0.8, 1000, 20, 300},
                                                   {"hip_y", 1, -2.1, 0.5, 1000, 20, 300},
                                                   {"hip_z", 2, -0.7, 0.7, 1000, 20, 300}}};
 inline constexpr std::array<dof_row, 1> knee_rows{{{"knee", 1, 0.0, 2.4, 1000, 20, 300}}};
-inline constexpr std::array<dof_row, 2> ankle_rows{{{"ankle_x", 0, -0.35, 0.6, 500, 2, 100},
-                                                    {"ankle_y", 1, -0.5, 0.87, 500, 2, 300}}};
+inline constexpr std::array<dof_row, 2> ankle_rows{
+    {{"ankle_x", 0, -0.35, 0.6, 500, 2, 100}, {"ankle_y", 1, -0.5, 0.87, 500, 2, 300}}};
 inline constexpr std::array<dof_row, 1> toe_rows{{{"toe", 1, -1.2, 0.6, 200, 0.3, 60}}};
 
 /// Geyer & Herr 2010 soft limits (Wang et al. 2012 Section 3): 0.3 N m/deg past the bound; ankle
@@ -97,8 +96,8 @@ std::vector<dof_spec> make_dofs(const std::array<dof_row, N>& rows, const std::s
   for (const dof_row& r : rows) {
     Eigen::Vector3d axis = Eigen::Vector3d::Zero();
     axis[r.axis] = 1.0;
-    joint_limit L = spring_damper_limit(r.lower, r.upper, r.stiffness * k_scale,
-                                        r.damping * k_scale);
+    joint_limit L =
+        spring_damper_limit(r.lower, r.upper, r.stiffness * k_scale, r.damping * k_scale);
     const std::string base = r.name;
     if (geyer_herr && (base == "hip_y" || base == "knee" || base == "ankle_y")) {
       if (base == "hip_y") L.upper = 50.0 * deg;
@@ -125,7 +124,8 @@ inline shape trunk_box(double m, double z0, double L) {
   const double depth = std::sqrt(area / 1.5);
   return box({0, 0, z0 + 0.5 * L}, {0.5 * depth, 0.75 * depth, 0.5 * L});
 }
-/// Capsule along -z for a limb of mass m and length L with the volume of a cylinder of density 1000.
+/// Capsule along -z for a limb of mass m and length L with the volume of a cylinder of density
+/// 1000.
 inline shape limb_capsule(double m, double L) {
   const double r = std::sqrt(m / 1000.0 / (std::numbers::pi * L));
   return capsule({0, 0, -r}, {0, 0, -L + r}, r);
@@ -150,8 +150,7 @@ inline floating_model build_humanoid30(const humanoid30_spec& sp) {
                Llpt = len(dl::lower_trunk), Lth = len(dl::thigh), Lsh = len(dl::shank),
                Lft = len(dl::foot);
   const double as = sp.arm_length_scale;
-  const double Lua = as * len(dl::upper_arm), Lfa = as * len(dl::forearm),
-               Lha = as * len(dl::hand);
+  const double Lua = as * len(dl::upper_arm), Lfa = as * len(dl::forearm), Lha = as * len(dl::hand);
 
   // Masses: de Leva's percentages, arms and trunk optionally re-weighted, normalized to M.
   const double ts = sp.trunk_mass_scale, ms = sp.arm_mass_scale;
@@ -159,8 +158,7 @@ inline floating_model build_humanoid30(const humanoid30_spec& sp) {
       dl::head.mass_percent +
       ts * (dl::upper_trunk.mass_percent + dl::middle_trunk.mass_percent +
             dl::lower_trunk.mass_percent) +
-      2.0 * (ms * (dl::upper_arm.mass_percent + dl::forearm.mass_percent +
-                   dl::hand.mass_percent) +
+      2.0 * (ms * (dl::upper_arm.mass_percent + dl::forearm.mass_percent + dl::hand.mass_percent) +
              dl::thigh.mass_percent + dl::shank.mass_percent + dl::foot.mass_percent);
   const auto mass = [&](const dl::segment& g, double w) {
     return M * w * g.mass_percent / total_percent;
@@ -184,8 +182,8 @@ inline floating_model build_humanoid30(const humanoid30_spec& sp) {
 
   // Soft-limit constants scale with mass * height^2 (as the subtree inertias do), torque limits
   // with mass * height (as gravity torques do).
-  const double k_scale = (M / reference_limit_mass) * (H / reference_limit_height) *
-                         (H / reference_limit_height);
+  const double k_scale =
+      (M / reference_limit_mass) * (H / reference_limit_height) * (H / reference_limit_height);
   const double tau_scale = (M / reference_limit_mass) * (H / reference_limit_height);
   const bool gh = sp.geyer_herr_sagittal_limits;
 
@@ -265,7 +263,8 @@ inline floating_model build_humanoid30(const humanoid30_spec& sp) {
       // ends so that the foot can roll on them.
       const std::array<double, 3> angles{-45.0 * deg, 0.0, 45.0 * deg};
       const std::array<const char*, 3> tag{"back", "mid", "front"};
-      for (const auto& [where, cx] : {std::pair{"heel", heel_x + rc}, std::pair{"ball", mtp_x - rc}})
+      for (const auto& [where, cx] :
+           {std::pair{"heel", heel_x + rc}, std::pair{"ball", mtp_x - rc}})
         for (int e = 0; e < 2; ++e)
           for (int a = 0; a < 3; ++a) {
             const double y = e == 0 ? lat : med;
@@ -316,17 +315,17 @@ inline floating_model build_humanoid30(const humanoid30_spec& sp) {
   for (const bool right : {false, true}) {
     const std::string S = right ? "r" : "l";
     const double side = right ? -1.0 : 1.0;
-    b.add_body({.name = S + "upper_arm",
-                .parent = "torso",
-                .joint_offset = {0, side * pr.shoulder_half_width * H,
-                                 Ltorso - pr.shoulder_drop * H},
-                .mass = m_ua,
-                .com = {0, 0, -0.01 * dl::upper_arm.com_percent * Lua},
-                .inertia = dl::upright_inertia(dl::upper_arm, m_ua, Lua),
-                .dofs = make_dofs(shoulder_rows, S, right, k_scale, tau_scale),
-                .shapes = {limb_capsule(m_ua, Lua)},
-                .length = Lua,
-                .segment_end = {0, 0, -Lua}});
+    b.add_body(
+        {.name = S + "upper_arm",
+         .parent = "torso",
+         .joint_offset = {0, side * pr.shoulder_half_width * H, Ltorso - pr.shoulder_drop * H},
+         .mass = m_ua,
+         .com = {0, 0, -0.01 * dl::upper_arm.com_percent * Lua},
+         .inertia = dl::upright_inertia(dl::upper_arm, m_ua, Lua),
+         .dofs = make_dofs(shoulder_rows, S, right, k_scale, tau_scale),
+         .shapes = {limb_capsule(m_ua, Lua)},
+         .length = Lua,
+         .segment_end = {0, 0, -Lua}});
     // Lower arm: forearm and hand welded together (the hand has no joint in the 30-DOF model).
     const solid::lumped fa{m_fa,
                            {0, 0, -0.01 * dl::forearm.com_percent * Lfa},
@@ -335,17 +334,17 @@ inline floating_model build_humanoid30(const humanoid30_spec& sp) {
                             {0, 0, -Lfa - 0.01 * dl::hand.com_percent * Lha},
                             dl::upright_inertia(dl::hand, m_ha, Lha)};
     const solid::lumped lower = solid::combine(fa, ha_);
-    b.add_body({.name = S + "lower_arm",
-                .parent = S + "upper_arm",
-                .joint_offset = {0, 0, -Lua},
-                .mass = lower.mass,
-                .com = lower.com,
-                .inertia = lower.inertia,
-                .dofs = make_dofs(elbow_rows, S, right, k_scale, tau_scale),
-                .shapes = {limb_capsule(m_fa, Lfa),
-                           capsule({0, 0, -Lfa}, {0, 0, -Lfa - Lha}, 0.025 * as)},
-                .length = Lfa + Lha,
-                .segment_end = {0, 0, -Lfa - Lha}});
+    b.add_body(
+        {.name = S + "lower_arm",
+         .parent = S + "upper_arm",
+         .joint_offset = {0, 0, -Lua},
+         .mass = lower.mass,
+         .com = lower.com,
+         .inertia = lower.inertia,
+         .dofs = make_dofs(elbow_rows, S, right, k_scale, tau_scale),
+         .shapes = {limb_capsule(m_fa, Lfa), capsule({0, 0, -Lfa}, {0, 0, -Lfa - Lha}, 0.025 * as)},
+         .length = Lfa + Lha,
+         .segment_end = {0, 0, -Lfa - Lha}});
   }
   return b.build();
 }
