@@ -1,0 +1,232 @@
+// Zero heap allocation in the rollout's step loop (after set-up). This binary replaces the global
+// operator new / delete with counting versions, and builds Eigen with EIGEN_RUNTIME_NO_MALLOC and
+// an eigen_assert that counts instead of aborting, because Eigen allocates through malloc, not
+// operator new. The counted region runs from the objective's first accumulate (step 0) to its last
+// (step N-1): every per-step code path (kinematics, contact, pushes, sensing and the delay line,
+// controller, actuator, objective, recorder, integrator) runs inside it many times.
+#include <atomic>
+#include <cstdlib>
+#include <new>
+
+namespace {
+std::atomic<long> g_news{0};
+std::atomic<long> g_eigen_mallocs{0};
+}  // namespace
+inline void gaitsynth_test_count_eigen_assert() {
+  ++g_eigen_mallocs;
+}
+#define EIGEN_RUNTIME_NO_MALLOC
+#define eigen_assert(x)                                             \
+  do {                                                              \
+    if (!static_cast<bool>(x)) gaitsynth_test_count_eigen_assert(); \
+  } while (false)
+
+// GCC 12 flags free() of memory from a (replaced) operator new once both are inlined into one
+// caller; here the pairing is by construction (every replaced new is malloc/aligned_alloc).
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wmismatched-new-delete"
+__attribute__((noinline)) void* operator new(std::size_t n) {
+  ++g_news;
+  if (void* p = std::malloc(n ? n : 1)) return p;
+  throw std::bad_alloc();
+}
+__attribute__((noinline)) void* operator new[](std::size_t n) {
+  return ::operator new(n);
+}
+__attribute__((noinline)) void* operator new(std::size_t n, std::align_val_t a) {
+  ++g_news;
+  const auto al = static_cast<std::size_t>(a);
+  if (void* p = std::aligned_alloc(al, (n + al - 1) / al * al)) return p;
+  throw std::bad_alloc();
+}
+__attribute__((noinline)) void* operator new[](std::size_t n, std::align_val_t a) {
+  return ::operator new(n, a);
+}
+__attribute__((noinline)) void* operator new(std::size_t n, const std::nothrow_t&) noexcept {
+  ++g_news;
+  return std::malloc(n ? n : 1);
+}
+__attribute__((noinline)) void* operator new[](std::size_t n, const std::nothrow_t&) noexcept {
+  ++g_news;
+  return std::malloc(n ? n : 1);
+}
+__attribute__((noinline)) void operator delete(void* p) noexcept {
+  std::free(p);
+}
+__attribute__((noinline)) void operator delete[](void* p) noexcept {
+  std::free(p);
+}
+__attribute__((noinline)) void operator delete(void* p, std::size_t) noexcept {
+  std::free(p);
+}
+__attribute__((noinline)) void operator delete[](void* p, std::size_t) noexcept {
+  std::free(p);
+}
+__attribute__((noinline)) void operator delete(void* p, std::align_val_t) noexcept {
+  std::free(p);
+}
+__attribute__((noinline)) void operator delete[](void* p, std::align_val_t) noexcept {
+  std::free(p);
+}
+__attribute__((noinline)) void operator delete(void* p, std::size_t, std::align_val_t) noexcept {
+  std::free(p);
+}
+__attribute__((noinline)) void operator delete[](void* p, std::size_t, std::align_val_t) noexcept {
+  std::free(p);
+}
+#pragma GCC diagnostic pop
+
+#include <catch2/catch.hpp>
+
+#include "gaitsynth/actuators/pd.hpp"
+#include "gaitsynth/actuators/torque.hpp"
+#include "gaitsynth/contact/flat_terrain.hpp"
+#include "gaitsynth/contact/slope_terrain.hpp"
+#include "gaitsynth/controllers/pose_hold.hpp"
+#include "gaitsynth/integrators/odeint.hpp"
+#include "gaitsynth/integrators/semi_implicit_euler.hpp"
+#include "gaitsynth/objectives/distance.hpp"
+#include "gaitsynth/rollout/rollout.hpp"
+#include "support/rollout_e2.hpp"
+
+using namespace gaitsynth;
+using namespace gaitsynth::test_e2;
+
+namespace {
+
+constexpr double dt = 1.0 / 2400.0;
+
+/// Counts allocations between its first and last accumulate (and forbids Eigen's in between).
+struct region {
+  long news_at_start = -1, news_at_end = -1, eigen_at_start = -1, eigen_at_end = -1;
+  long views = 0;
+};
+
+template <class Inner>
+struct counting_objective {
+  Inner inner;
+  region* r;
+  using accumulator_type = typename Inner::accumulator_type;
+  template <root_joint Root>
+  accumulator_type make_accumulator(const model<Root>& m) const {
+    return inner.make_accumulator(m);
+  }
+  template <class View>
+  void accumulate(accumulator_type& a, const View& v) const {
+    if (v.step == 0) {
+      r->news_at_start = g_news.load();
+      r->eigen_at_start = g_eigen_mallocs.load();
+      Eigen::internal::set_is_malloc_allowed(false);
+    }
+    inner.accumulate(a, v);
+    ++r->views;
+    r->news_at_end = g_news.load();
+    r->eigen_at_end = g_eigen_mallocs.load();
+  }
+  double finish(const accumulator_type& a, const rollout_outcome& out) const {
+    Eigen::internal::set_is_malloc_allowed(true);
+    return inner.finish(a, out);
+  }
+};
+
+/// A controller that reads delayed sensors at 64 Hz (exercises the delay line and the period).
+struct delayed_reader {
+  struct state_type {
+    double sum = 0;
+  };
+  pose_hold inner;
+  explicit delayed_reader(const auto& m) : inner(m) {}
+  std::size_t num_parameters() const { return inner.num_parameters(); }
+  void bind(std::span<const double> p) { inner.bind(p); }
+  double period() const { return 1.0 / 64.0; }
+  double max_sensor_delay() const { return 0.02; }
+  template <root_joint Root>
+  state_type make_state(const model<Root>&) const {
+    return {};
+  }
+  template <root_joint Root>
+  void command(const sensors<Root>& s, state_type& st, Eigen::Ref<Eigen::VectorXd> cmd) const {
+    st.sum += s.delayed_q(0.02).sum() + s.delayed_v(0.005).sum() +
+              s.delayed_contact_count(0, 0.01) + s.com_relative_to(1).norm() + s.body_up(0).z();
+    pose_hold::state_type unused;
+    inner.command(s, unused, cmd);
+  }
+};
+
+template <class Model, class Actuator, class Controller, class Terrain, class Integrator>
+void require_no_allocation(const Model& m, const Actuator& act, Controller&& ctrl,
+                           const Terrain& ground, Integrator&& integ, rollout_options opt) {
+  auto scratch = make_rollout_scratch(m);
+  region r;
+  const counting_objective<decltype(distance_objective())> obj{distance_objective(), &r};
+  const Eigen::VectorXd p = standing_pose(m);
+  const auto res = rollout(m, act, ctrl, obj, ground, integ, p, opt, scratch);
+  Eigen::internal::set_is_malloc_allowed(true);
+  INFO(m.name << ": " << to_string(res.reason) << " after " << res.steps << " steps");
+  REQUIRE(res.reason == stop_reason::horizon);
+  REQUIRE(r.views == res.steps);
+  CHECK(r.news_at_end - r.news_at_start == 0);
+  CHECK(r.eigen_at_end - r.eigen_at_start == 0);
+}
+
+template <class Model>
+rollout_options options_for(const Model& m, const auto& ground) {
+  rollout_options o;
+  o.dt = dt;
+  o.duration = 0.1;
+  o.initial_state = make_state(m);
+  place_on_terrain(m, ground, o.initial_state.q);
+  o.pushes = {push{0, vec3(40, 10, 0), 0.02, 0.05}};
+  return o;
+}
+
+/// Keeps the compiler from eliding an allocation (new/delete pairs may be elided since C++14).
+void benchmark_escape(void* p) {
+  asm volatile("" : : "g"(p) : "memory");
+}
+
+}  // namespace
+
+TEST_CASE("the counters see allocations (the test is not vacuous)", "[rollout][allocation]") {
+  const long n0 = g_news.load();
+  std::vector<int> v(100);
+  benchmark_escape(v.data());
+  CHECK(g_news.load() - n0 >= 1);
+  const long e0 = g_eigen_mallocs.load();
+  Eigen::internal::set_is_malloc_allowed(false);
+  Eigen::VectorXd x(1000);
+  Eigen::internal::set_is_malloc_allowed(true);
+  CHECK(g_eigen_mallocs.load() - e0 >= 1);
+  CHECK(x.size() == 1000);
+}
+
+TEST_CASE("no heap allocation in the step loop of a rollout", "[rollout][allocation]") {
+  SECTION("3D humanoid, PD, flat ground, semi-implicit Euler, pushes") {
+    const auto m = wang2009_humanoid();
+    require_no_allocation(m, standing_pd(m, dt), pose_hold(m), flat_terrain(),
+                          semi_implicit_euler(), options_for(m, flat_terrain()));
+  }
+  SECTION("3D humanoid, torque actuator, slope, Odeint RK4") {
+    const auto m = wang2009_humanoid();
+    const pd_actuator g = standing_pd(m, dt);
+    require_no_allocation(
+        m, torque_actuator{},
+        pose_hold(m, {.output = command_kind::joint_torque, .kp = g.kp, .kd = g.kd}),
+        slope_terrain(0.05), odeint_rk4(), options_for(m, slope_terrain(0.05)));
+  }
+  SECTION("3D humanoid, delayed sensors at 64 Hz") {
+    const auto m = wang2009_humanoid();
+    require_no_allocation(m, standing_pd(m, dt), delayed_reader(m), flat_terrain(),
+                          semi_implicit_euler(), options_for(m, flat_terrain()));
+  }
+  SECTION("7-link planar human with the recorder on") {
+    const auto m = sharon2005_human7();
+    auto opt = options_for(m, flat_terrain());
+    trajectory tr;
+    opt.record = &tr;
+    opt.record_every = 4;
+    require_no_allocation(m, standing_pd(m, dt), pose_hold(m), flat_terrain(),
+                          semi_implicit_euler(), opt);
+    CHECK(tr.frames.size() == 61);
+  }
+}
