@@ -61,9 +61,12 @@ def build(name, model, description, figure, keys, end_time, lengths, stance="rig
         if upper is not None:
             pose.update(upper[i])
         frames.append({"time": t, "pose": pose})
-        print(f"  {name} key {i} t={t}: root ({root[0]:.3f}, {root[1]:.3f})  "
-              f"r heel ({out['r'][0][0]:.3f},{out['r'][0][1]:.3f}) toe ({out['r'][1][0]:.3f},{out['r'][1][1]:.3f})  "
-              f"l heel ({out['l'][0][0]:.3f},{out['l'][0][1]:.3f}) toe ({out['l'][1][0]:.3f},{out['l'][1][1]:.3f})")
+        g = math.tan(math.radians(slope))
+        def above(p):
+            return p[1] - p[0] * g
+        print(f"  {name} key {i} t={t}: root ({root[0]:.3f}, {root[1]:.3f})  heights above ground: "
+              f"r heel {above(out['r'][0]):.3f} toe {above(out['r'][1]):.3f}  "
+              f"l heel {above(out['l'][0]):.3f} toe {above(out['l'][1]):.3f}")
     # Stride: the trailing (left) toe of keyframe 0 becomes, mirrored and advanced, the right toe
     # that the last keyframe has planted at trailing_toe_x.
     root0, out0 = place(*keys[0][1:], lengths, slope)
@@ -93,6 +96,7 @@ def build(name, model, description, figure, keys, end_time, lengths, stance="rig
 
 
 H7 = (0.46, 0.44, 0.22)
+H16 = (0.430181, 0.448623, 0.262979)  # sharon2005_human16() defaults (de Leva reference male)
 
 # Figure 5a: a normal walk. Right heel strike -> loading -> mid-stance -> heel off; the left leg
 # pushes off, swings through with the knee bent and reaches forward. One step = 0.55 s.
@@ -104,3 +108,60 @@ build("normal_walk.keyframes.json", "sharon2005_human7",
        (0.27, 4, (-1, 5, 0), (-20, 55, 15), ("r", "heel", 0.0)),
        (0.41, 4, (11, 3, 10), (-26, 12, -3), ("r", "toe", 0.22))],
       0.55, H7)
+
+# Figure 6a: prolonged double stance and an exaggerated knee lift in the fourth keyframe. The left
+# toe stays on the ground through keyframe 1 (double stance), then the knee rises to hip height.
+build("high_knee.keyframes.json", "sharon2005_human7",
+      "Stylized walk of the 7-link human with a prolonged double stance and a high knee lift "
+      "(Sharon & van de Panne 2005, Figure 6a), one step listed; the next step is its mirror image.",
+      "6a",
+      [(0.00, 4, (-19, 3, -5), (14, 14, 22), ("r", "heel", 0.0)),
+       (0.20, 4, (-8, 6, 0), (22, 22, 45), ("r", "heel", 0.0)),
+       (0.32, 4, (-2, 5, 0), (-15, 75, 40), ("r", "heel", 0.0)),
+       (0.47, 4, (4, 4, 0), (-70, 100, 20), ("r", "heel", 0.0)),
+       (0.60, 4, (11, 3, 10), (-28, 12, -3), ("r", "toe", 0.22))],
+      0.72, H7)
+
+# Figure 6c: an extra backward swing of the swing leg in the third keyframe: forward, back,
+# forward again before foot strike.
+build("backswing.keyframes.json", "sharon2005_human7",
+      "Stylized walk of the 7-link human with an extra backward swing of the swing leg "
+      "(Sharon & van de Panne 2005, Figure 6c), one step listed; the next step is its mirror image.",
+      "6c",
+      [(0.00, 4, (-19, 3, -5), (14, 14, 22), ("r", "heel", 0.0)),
+       (0.17, 4, (-11, 10, 0), (-28, 55, 15), ("r", "heel", 0.0)),
+       (0.35, 4, (-2, 5, 0), (6, 62, 42), ("r", "heel", 0.0)),
+       (0.55, 4, (11, 3, 10), (-27, 12, -3), ("r", "toe", 0.22))],
+      0.70, H7)
+
+# Figure 7a: walking up a 10 degree slope: the trunk leans forward, hips flex more, the feet land
+# parallel to the slope (world pitch -10 degrees: toe up).
+build("uphill.keyframes.json", "sharon2005_human7",
+      "Walk of the 7-link human up a 10 degree slope (Sharon & van de Panne 2005, Figure 7a), one "
+      "step listed; the next step is its mirror image, one stride higher.", "7a",
+      [(0.00, 10, (-38, 12, -14), (0, 12, 15), ("r", "heel", 0.0)),
+       (0.15, 10, (-32, 25, -10), (-12, 60, 30), ("r", "heel", 0.0)),
+       (0.30, 10, (-20, 18, -10), (-45, 75, 0), ("r", "heel", 0.0)),
+       (0.45, 10, (-6, 8, -4), (-55, 35, -15), ("r", "toe", 0.22))],
+      0.60, H7, slope=10.0)
+
+# Figure 5c: the 16-link human walking with the normal walk's legs, arms swinging against the legs
+# and a slightly flexed trunk. Only the legs are optimized; the upper body follows the nodes.
+ARMS = [  # per keyframe: upper-body DOFs (degrees)
+    {"back": 2, "chest": 0, "neck": 0, "rshoulder": 20, "relbow": -15, "rwrist": 0,
+     "lshoulder": -20, "lelbow": -25, "lwrist": 0},
+    {"back": 2, "chest": 0, "neck": 0, "rshoulder": 12, "relbow": -15, "rwrist": 0,
+     "lshoulder": -12, "lelbow": -22, "lwrist": 0},
+    {"back": 2, "chest": 0, "neck": 0, "rshoulder": 0, "relbow": -18, "rwrist": 0,
+     "lshoulder": 0, "lelbow": -18, "lwrist": 0},
+    {"back": 2, "chest": 0, "neck": 0, "rshoulder": -15, "relbow": -24, "rwrist": 0,
+     "lshoulder": 15, "lelbow": -15, "lwrist": 0},
+]
+build("human16_walk.keyframes.json", "sharon2005_human16",
+      "Walk of the 16-link human (Sharon & van de Panne 2005, Figure 5c), one step listed; the "
+      "next step is its mirror image.", "5c",
+      [(0.00, 2, (-19, 3, -5), (14, 20, 26), ("r", "heel", 0.0)),
+       (0.13, 2, (-13, 12, 0), (2, 45, 40), ("r", "heel", 0.0)),
+       (0.27, 2, (-1, 5, 0), (-20, 55, 15), ("r", "heel", 0.0)),
+       (0.41, 2, (11, 3, 10), (-26, 12, -3), ("r", "toe", 0.262979))],
+      0.55, H16, upper=ARMS)
