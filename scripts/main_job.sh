@@ -5,9 +5,9 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/install_deps.sh
-cmake -S . -B build/release -G Ninja -DCMAKE_BUILD_TYPE=Release \
+cmake -S . -B build/main -G Ninja -DCMAKE_BUILD_TYPE=Release \
   -DGAITSYNTH_BUILD_TESTS=OFF -DGAITSYNTH_BUILD_BENCHMARKS=OFF >/dev/null
 target=sharon2005_normal_walk
-cmake --build build/release -j"$(nproc)" --target "$target"
+cmake --build build/main -j"$(nproc)" --target "$target"
 mkdir -p out
-./build/release/examples/"$target" --out out "$@"
+./build/main/examples/"$target" --out out "$@"
