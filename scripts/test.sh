@@ -12,12 +12,12 @@ if [[ "${1:-}" == "--sanitize" ]]; then
   # Debug keeps Eigen's and the library's assertions on; -O1 keeps the instrumented suite fast
   # enough to run in full.
   cmake -S . -B "$dir" -G Ninja -DCMAKE_BUILD_TYPE=Debug -DCMAKE_CXX_FLAGS_DEBUG="-O1 -g1" \
-    -DGAITSYNTH_SANITIZE=ON \
+    -DGAITSYNTH_SANITIZE=ON -DGAITSYNTH_BUILD_TESTS=ON \
     -DGAITSYNTH_BUILD_BENCHMARKS=OFF -DGAITSYNTH_BUILD_EXAMPLES=OFF
   export ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
 else
   dir=build/release
-  cmake -S . -B "$dir" -G Ninja -DCMAKE_BUILD_TYPE=Release
+  cmake -S . -B "$dir" -G Ninja -DCMAKE_BUILD_TYPE=Release -DGAITSYNTH_BUILD_TESTS=ON
 fi
 cmake --build "$dir" -j"$jobs"
 ctest --test-dir "$dir" -j"$jobs" --output-on-failure --timeout 900
