@@ -11,7 +11,7 @@ if [[ "${1:-}" == "--sanitize" ]]; then
   dir=build/sanitize
   # Debug keeps Eigen's and the library's assertions on; -O1 keeps the instrumented suite fast
   # enough to run in full.
-  cmake -S . -B "$dir" -G Ninja -DCMAKE_BUILD_TYPE=Debug -DCMAKE_CXX_FLAGS_DEBUG="-O1 -g1" \
+  cmake -S . -B "$dir" -G Ninja -DCMAKE_BUILD_TYPE=Debug -DCMAKE_CXX_FLAGS_DEBUG="-O1" \
     -DGAITSYNTH_SANITIZE=ON -DGAITSYNTH_BUILD_TESTS=ON \
     -DGAITSYNTH_BUILD_BENCHMARKS=OFF -DGAITSYNTH_BUILD_EXAMPLES=OFF
   export ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
