@@ -53,4 +53,13 @@ TEST_CASE("MJCF replay: MuJoCo's key k reproduces frame k", "[viz][mjcf][mujoco]
   check_replay_in_mujoco(planar, viz_test::make_walk(planar, 0.6, 0.02));
   const auto floating = viz_test::make_biped<floating_root>();
   check_replay_in_mujoco(floating, viz_test::make_walk(floating, 0.6, 0.02));
+  // A floating root with a joint_offset (io/mjcf.hpp writes slides + a ball joint for it).
+  auto offset = floating;
+  offset.name = "offset_root";
+  offset.bodies[0].joint_offset = {0.1, -0.05, 0.2};
+  check_replay_in_mujoco(offset, viz_test::make_walk(offset, 0.6, 0.02));
+  auto planar_offset = planar;
+  planar_offset.name = "offset_planar";
+  planar_offset.bodies[0].joint_offset = {0.1, 0.0, 0.2};
+  check_replay_in_mujoco(planar_offset, viz_test::make_walk(planar_offset, 0.6, 0.02));
 }

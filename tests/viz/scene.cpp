@@ -62,6 +62,17 @@ TEST_CASE("compute_body_poses: floating root and two DOFs in one body", "[viz][s
   CHECK((r[thigh].toRotationMatrix() - expected).norm() < 1e-12);
   CHECK((p[thigh] - (Eigen::Vector3d(1, 2, 3) + root * Eigen::Vector3d(0, -0.1, -0.07))).norm() <
         1e-12);
+  // A root joint_offset shifts the root origin (root origin = joint_offset + q[0:3], as in
+  // dynamics/kinematics.hpp and io/mjcf.hpp) and with it every body.
+  auto shifted = m;
+  shifted.bodies[0].joint_offset = {0.1, -0.2, 0.3};
+  std::vector<Eigen::Vector3d> p2;
+  std::vector<Eigen::Quaterniond> r2;
+  compute_body_poses(shifted, q, p2, r2);
+  for (int b = 0; b < m.num_bodies(); ++b) {
+    CHECK((p2[b] - p[b] - Eigen::Vector3d(0.1, -0.2, 0.3)).norm() < 1e-14);
+    CHECK(r2[b].angularDistance(r[b]) < 1e-14);
+  }
   Eigen::VectorXd bad = q.head(5);
   CHECK_THROWS_AS(compute_body_poses(m, bad, p, r), std::invalid_argument);
 }

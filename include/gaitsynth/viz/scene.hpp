@@ -40,10 +40,10 @@ void compute_body_poses(const model<Root>& m, const Eigen::VectorXd& q,
   orientation.assign(nb, Eigen::Quaterniond::Identity());
   if (nb == 0) return;
   if constexpr (Root::nq == 3) {
-    position[0] = Eigen::Vector3d(q[0], 0.0, q[1]);
+    position[0] = m.bodies[0].joint_offset + Eigen::Vector3d(q[0], 0.0, q[1]);
     orientation[0] = Eigen::Quaterniond(Eigen::AngleAxisd(q[2], Eigen::Vector3d::UnitY()));
   } else if constexpr (Root::nq == 7) {
-    position[0] = q.head<3>();
+    position[0] = m.bodies[0].joint_offset + q.head<3>();
     Eigen::Quaterniond r(q[3], q[4], q[5], q[6]);
     check_argument(r.norm() > 1e-12, "compute_body_poses: root quaternion is zero");
     orientation[0] = r.normalized();
