@@ -7,7 +7,8 @@ if [[ "${1:-}" == "--tests" ]]; then
   # catch2 2.13: tests; libbenchmark-dev: benchmarks (built to keep them compiling);
   # libmujoco-dev: rigid-body oracle and benchmark peer; chromium: headless player test;
   # python3: plot scripts.
-  pkgs+=(catch2 libbenchmark-dev libmujoco-dev chromium python3)
+  # libqhull-dev: libmujoco-dev exports its include dir without depending on it.
+  pkgs+=(catch2 libbenchmark-dev libmujoco-dev libqhull-dev chromium python3)
 fi
 missing=()
 for p in "${pkgs[@]}"; do
