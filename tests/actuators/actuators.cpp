@@ -136,3 +136,60 @@ TEST_CASE("pd_actuator rejects gains that do not fit the model", "[actuators][pd
                       .make_state(m),
                   std::invalid_argument);
 }
+
+#include <Eigen/Eigenvalues>
+
+#include "gaitsynth/dynamics/crba.hpp"
+#include "gaitsynth/models/wang2009.hpp"
+
+namespace {
+/// lambda_max(M^-1 (Kp dt^2 + 2 Kd dt)) at the neutral configuration: the explicit-PD stability
+/// measure (< 4 stable) that pd_actuator::capped bounds by 2 margin.
+template <root_joint Root>
+double pd_step_rate(const model<Root>& m, const pd_actuator& pd, double dt) {
+  auto ws = make_workspace(m);
+  const Eigen::MatrixXd M = crba(m, ws, neutral_configuration(m));
+  Eigen::MatrixXd K = Eigen::MatrixXd::Zero(m.nv(), m.nv());
+  K.diagonal().tail(m.num_joint_dofs()) = pd.kp * dt * dt + 2.0 * dt * pd.kd;
+  Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd> es(K, M, Eigen::EigenvaluesOnly);
+  return es.eigenvalues().maxCoeff();
+}
+}  // namespace
+
+TEST_CASE("joint_effective_inertia is 1 / diag(M^-1) at the neutral configuration",
+          "[actuators][pd][capped]") {
+  const auto m = three_joint_chain();
+  const Eigen::VectorXd I = joint_effective_inertia(m);
+  auto ws = make_workspace(m);
+  const Eigen::MatrixXd M = crba(m, ws, neutral_configuration(m));
+  const Eigen::MatrixXd Minv = M.inverse();
+  for (int j = 0; j < 3; ++j) CHECK(I[j] == Approx(1.0 / Minv(3 + j, 3 + j)).epsilon(1e-12));
+  // A floating joint drives less than the locked subtree inertia M_jj.
+  for (int j = 0; j < 3; ++j) CHECK(I[j] <= M(3 + j, 3 + j) * (1 + 1e-12));
+}
+
+TEST_CASE("pd_actuator::capped keeps explicit PD stable and leaves stable gains alone",
+          "[actuators][pd][capped]") {
+  const auto m = wang2009_humanoid();
+  const double dt = 1.0 / 2400.0;
+  // Wang et al. 2009 Table 2 style gains, kd = 0.1 kp: unstable at 2400 Hz (lambda > 4).
+  const pd_actuator raw = pd_actuator::uniform(m, 300.0, 30.0);
+  CHECK(pd_step_rate(m, raw, dt) > 4.0);
+  const pd_actuator capped = pd_actuator::capped(m, raw.kp, raw.kd, dt);
+  CHECK(pd_step_rate(m, capped, dt) <= 2.0 * (1 + 1e-9));
+  CHECK(pd_step_rate(m, capped, dt) >= 1.9);  // the bisection found the largest c
+  // Only lowered, never raised; the heavy hips keep their stiffness.
+  CHECK((capped.kp.array() <= raw.kp.array()).all());
+  CHECK((capped.kd.array() <= raw.kd.array()).all());
+  CHECK(capped.kp[m.dof_index("lhip_y")] == 300.0);
+  CHECK(capped.kd[m.dof_index("ltoe")] < raw.kd[m.dof_index("ltoe")]);
+  // Gains that are already stable come back unchanged.
+  const pd_actuator soft = pd_actuator::uniform(m, 1.0, 0.01);
+  const pd_actuator same = pd_actuator::capped(m, soft.kp, soft.kd, dt);
+  CHECK(same.kp == soft.kp);
+  CHECK(same.kd == soft.kd);
+  // Bad input.
+  CHECK_THROWS_WITH(pd_actuator::capped(m, raw.kp, raw.kd, 0.0), Catch::Contains("dt"));
+  CHECK_THROWS_WITH(pd_actuator::capped(m, Eigen::VectorXd::Ones(3), raw.kd, dt),
+                    Catch::Contains("expected 30, got 3"));
+}

@@ -52,7 +52,7 @@ class distance_travelled {
     return -(out.com_final - out.com_initial).dot(dir_);
   }
 
-  static std::array<std::string_view, 1> term_names() { return {"distance [m]"}; }
+  static std::array<std::string_view, 1> term_names() { return {"distance_m"}; }
   void terms(const accumulator_type& a, std::span<double> out) const {
     out[0] = a.started ? (a.com_last - a.com_start).dot(dir_) : 0.0;
   }
