@@ -22,6 +22,7 @@ struct cli {
   long long evaluations_per_episode = -1;  // -1: the example's default
   double check_seconds = 70.0;
   std::string keyframes;  // empty: the example's data file
+  bool single_start = false;  // the paper's cost: one start state (no perturbed copies)
 };
 
 inline void usage(const char* name, const char* what) {
@@ -31,7 +32,10 @@ inline void usage(const char* name, const char* what) {
             << "  --threads N                evaluation threads (default 2)\n"
             << "  --evaluations-per-episode N  SDS budget per bootstrapping episode\n"
             << "  --check-seconds S          length of the final test rollout (default 70)\n"
-            << "  --keyframes FILE           target motion (default: the data/sharon2005 file)\n";
+            << "  --keyframes FILE           target motion (default: the data/sharon2005 file)\n"
+            << "  --single-start             evaluate each candidate from the first keyframe only\n"
+            << "                             (the paper's cost); default: also from 3 perturbed\n"
+            << "                             copies (velocity x0.9, x1.1, 1 cm higher)\n";
 }
 
 inline cli parse(int argc, char** argv, const char* what) {
@@ -47,6 +51,7 @@ inline cli parse(int argc, char** argv, const char* what) {
     else if (a == "--evaluations-per-episode") c.evaluations_per_episode = std::stoll(value());
     else if (a == "--check-seconds") c.check_seconds = std::stod(value());
     else if (a == "--keyframes") c.keyframes = value();
+    else if (a == "--single-start") c.single_start = true;
     else if (a == "--help" || a == "-h") {
       usage(argv[0], what);
       std::exit(0);
@@ -59,8 +64,61 @@ inline cli parse(int argc, char** argv, const char* what) {
   return c;
 }
 
+/// The nearest-neighbor controller of the 7-link human: 12 nodes (6 free), input = torso pitch and
+/// the six joint angles, 370 N m servos, torso servo on the stance hip. The gains are ours (the
+/// paper refers to Sharon's thesis for them).
+inline gaitsynth::nearest_neighbor_options human7_options() {
+  gaitsynth::nearest_neighbor_options o;
+  o.num_nodes = 12;
+  o.default_kp = 600.0;
+  o.default_kd = 60.0;
+  o.torso_kp = 1000.0;
+  o.torso_kd = 100.0;
+  o.torque_limit = 370.0;
+  return o;
+}
+
+/// The 16-link human: the same leg servos; only hips, knees and ankles are free (section VI.A) and
+/// form the input with the pelvis pitch; the upper body follows the nodes' stored targets with
+/// softer servos (its joints' torque limits are lower, models/sharon2005.hpp).
+template <class Model>
+gaitsynth::nearest_neighbor_options human16_options(const Model& m) {
+  gaitsynth::nearest_neighbor_options o = human7_options();
+  o.free_dofs = {"lhip", "lknee", "lankle", "rhip", "rknee", "rankle"};
+  o.input = {"root_pitch", "lhip", "lknee", "lankle", "rhip", "rknee", "rankle"};
+  o.kp.clear();
+  for (const auto& d : m.dofs) {
+    const std::string& n = d.name;
+    const bool leg = n.find("hip") != std::string::npos || n.find("knee") != std::string::npos ||
+                     n.find("ankle") != std::string::npos;
+    const bool trunk = n == "back" || n == "chest";
+    o.kp.push_back(leg ? 600.0 : trunk ? 600.0 : n.find("wrist") != std::string::npos ? 20.0 : 100.0);
+  }
+  o.kd.clear();
+  for (double k : o.kp) o.kd.push_back(0.1 * k);
+  return o;
+}
+
+/// Bootstrapped SDS as in section V.C: episodes of 0.2, 0.4, ..., 2 s.
+inline gaitsynth::nn_synthesis_options synthesis_defaults() {
+  gaitsynth::nn_synthesis_options so;
+  so.horizons = gaitsynth::default_episode_horizons();
+  so.evaluations_per_episode = 400;
+  so.initial_step = 0.1;
+  so.min_step = 0.0125;
+  return so;
+}
+
 inline std::string data_file(const std::string& name) {
   return std::string(GAITSYNTH_SOURCE_DIR) + "/data/sharon2005/" + name;
+}
+
+/// The cost's start states: the problem's initial state, plus (unless --single-start) perturbed
+/// copies of it (section VII's remedy; see perturbed_starts).
+template <class Problem>
+void set_starts(Problem& prob, const cli& c) {
+  if (c.single_start) prob.starts.clear();
+  else prob.starts = gaitsynth::perturbed_starts(prob.character, prob.options.initial_state);
 }
 
 /// Runs the synthesis, the check rollout, writes the outputs and prints the summary line.
@@ -77,10 +135,11 @@ int synthesize_and_report(const std::string& name, const Problem& prob,
   std::filesystem::create_directories(c.out_dir);
   so.run.log_file = c.out_dir / (name + ".convergence.csv");
   const std::size_t n_params = prob.controller.num_parameters();
+  const std::size_t n_starts = prob.starts.empty() ? 1 : prob.starts.size();
   std::cerr << name << ": optimizing " << n_params << " parameters of a "
             << prob.controller.num_nodes() << "-node controller ("
             << prob.controller.num_free_nodes() << " free) with SDS on " << so.threads
-            << " thread(s)\n";
+            << " thread(s), " << n_starts << " start state(s) per evaluation\n";
   const nn_synthesis_result r = synthesize_nearest_neighbor(prob, so);
   std::cerr << name << ": " << r.evaluations << " evaluations in " << r.wall_seconds
             << " s; checking the controller over " << c.check_seconds << " s\n";
@@ -94,6 +153,8 @@ int synthesize_and_report(const std::string& name, const Problem& prob,
   info["evaluations"] = r.evaluations;
   info["wall_seconds"] = r.wall_seconds;
   info["threads"] = so.threads;
+  info["start_states"] = n_starts;
+  info["rollouts"] = r.evaluations * static_cast<long long>(n_starts);
   info["episodes"] = r.horizons;
   nlohmann::ordered_json ev = nlohmann::ordered_json::array();
   for (const auto& s : r.episodes.stages) ev.push_back(s.evaluations);
@@ -114,6 +175,7 @@ int synthesize_and_report(const std::string& name, const Problem& prob,
   nlohmann::ordered_json summary;
   summary["example"] = name;
   summary["evaluations"] = r.evaluations;
+  summary["rollouts"] = r.evaluations * static_cast<long long>(n_starts);
   summary["wall_seconds"] = std::round(r.wall_seconds * 100) / 100;
   summary["cost"] = r.value;
   summary["seconds_walked"] = w.seconds;

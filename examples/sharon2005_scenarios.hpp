@@ -22,13 +22,15 @@
 namespace sharon_scenarios {
 
 /// A planar bumpy profile along x (a height field with one row, which planar models query at
-/// y = 0): a sum of sinusoids of wavelengths 1.5 to 6 m (by default) with seeded random phases and amplitudes,
-/// sampled every 5 cm and scaled so that its steepest gradient is exactly max_slope_deg; flat (and
-/// blended in over 1 m) before x = flat_until so that the walk starts on level ground.
+/// y = 0): a sum of six sinusoids of wavelengths 0.5 to 2 m (by default: bumps, not hills) with
+/// seeded random phases and amplitudes, sampled every 5 cm and scaled so that its steepest gradient
+/// is exactly max_slope_deg (the paper gives only that); flat (and blended in over 1 m) before
+/// x = flat_until so that the walk starts on level ground. With the defaults the heights span about
+/// 5 to 8 cm.
 inline gaitsynth::height_field_terrain bumpy_terrain(double max_slope_deg = 11.0,
                                                      std::uint64_t seed = 2005,
-                                                     double min_wavelength = 1.5,
-                                                     double max_wavelength = 6.0,
+                                                     double min_wavelength = 0.5,
+                                                     double max_wavelength = 2.0,
                                                      double length = 120.0,
                                                      double flat_until = 1.0) {
   const double spacing = 0.05, x0 = -5.0;

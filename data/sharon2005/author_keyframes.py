@@ -104,9 +104,9 @@ build("normal_walk.keyframes.json", "sharon2005_human7",
       "Normal walk of the 7-link human (Sharon & van de Panne 2005, Figure 5a), one step listed; "
       "the next step is its mirror image.", "5a",
       [(0.00, 4, (-19, 3, -5), (14, 14, 22), ("r", "heel", 0.0)),
-       (0.13, 4, (-13, 12, 0), (2, 45, 40), ("r", "heel", 0.0)),
-       (0.27, 4, (-1, 5, 0), (-20, 55, 15), ("r", "heel", 0.0)),
-       (0.41, 4, (11, 3, 10), (-26, 12, -3), ("r", "toe", 0.22))],
+       (0.13, 4, (-13, 12, 0), (0, 55, 45), ("r", "heel", 0.0)),
+       (0.27, 4, (-1, 5, 0), (-24, 70, 18), ("r", "heel", 0.0)),
+       (0.41, 4, (11, 3, 10), (-27, 15, -3), ("r", "toe", 0.22))],
       0.55, H7)
 
 # Figure 6a: prolonged double stance and an exaggerated knee lift in the fourth keyframe. The left
@@ -161,7 +161,7 @@ build("human16_walk.keyframes.json", "sharon2005_human16",
       "Walk of the 16-link human (Sharon & van de Panne 2005, Figure 5c), one step listed; the "
       "next step is its mirror image.", "5c",
       [(0.00, 2, (-19, 3, -5), (14, 20, 26), ("r", "heel", 0.0)),
-       (0.13, 2, (-13, 12, 0), (2, 45, 40), ("r", "heel", 0.0)),
-       (0.27, 2, (-1, 5, 0), (-20, 55, 15), ("r", "heel", 0.0)),
-       (0.41, 2, (11, 3, 10), (-26, 12, -3), ("r", "toe", 0.262979))],
+       (0.13, 2, (-13, 12, 0), (0, 55, 45), ("r", "heel", 0.0)),
+       (0.27, 2, (-1, 5, 0), (-24, 70, 18), ("r", "heel", 0.0)),
+       (0.41, 2, (11, 3, 10), (-27, 15, -3), ("r", "toe", 0.262979))],
       0.55, H16, upper=ARMS)

@@ -15,12 +15,20 @@ using sharon_test::small_walk;
 using sharon_test::vec;
 using NN = nearest_neighbor_controller<planar_root>;
 
+namespace {
+// The small biped has no feet: the stance leg comes from the nodes' labels.
+nearest_neighbor_options labels_only(nearest_neighbor_options o = {}) {
+  o.stance_from_contacts = false;
+  return o;
+}
+}  // namespace
+
 TEST_CASE("nearest neighbor: initialization along the target motion", "[sharon2005][nn]") {
   const auto m = small_biped();
   const auto walk = small_walk(m);
   nearest_neighbor_options o;
   o.num_nodes = 12;
-  const NN c(m, walk, o);
+  const NN c(m, walk, labels_only(o));
   REQUIRE(c.num_inputs() == 5);  // root_pitch + 4 joints
   CHECK(c.num_free_nodes() == 6);
   CHECK(c.num_parameters() == 6 * (4 + 4));
@@ -54,7 +62,7 @@ TEST_CASE("nearest neighbor: eq. 1 selection equals a brute-force weighted searc
     n.location = Eigen::VectorXd::NullaryExpr(5, [&] { return U(rng); });
     n.output = Eigen::VectorXd::NullaryExpr(4, [&] { return U(rng); });
   }
-  const NN c(m, o, nodes);
+  const NN c(m, labels_only(o), nodes);
   const Eigen::VectorXd w = vec({2.0, 1.0, 0.5, 1.0, 0.0});
   for (int trial = 0; trial < 200; ++trial) {
     Eigen::VectorXd q = Eigen::VectorXd::NullaryExpr(m.nq(), [&] { return U(rng); });
@@ -75,7 +83,7 @@ TEST_CASE("nearest neighbor: eq. 1 selection equals a brute-force weighted searc
 
 TEST_CASE("nearest neighbor: symmetric nodes, only half are free", "[sharon2005][nn]") {
   const auto m = small_biped();
-  const NN c0(m, small_walk(m), {});
+  const NN c0(m, small_walk(m), labels_only());
   NN c = c0;
   std::vector<double> p = c.parameters();
   REQUIRE(p.size() == 48);
@@ -120,7 +128,7 @@ TEST_CASE("nearest neighbor: restricted activation order", "[sharon2005][nn]") {
   const auto m = small_biped();
   nearest_neighbor_options o;
   o.max_advance = 1;
-  NN c(m, small_walk(m), o);
+  NN c(m, small_walk(m), labels_only(o));
   sharon_test::sensor_fixture<planar_root> f(m);
   NN::state_type st = c.make_state(m);
   Eigen::VectorXd cmd(4);
@@ -141,7 +149,7 @@ TEST_CASE("nearest neighbor: restricted activation order", "[sharon2005][nn]") {
   c.command(f.update(), st, cmd);
   CHECK((st.active == 5 || st.active == 6));
   // Unrestricted controller jumps directly.
-  NN u(m, small_walk(m), {});
+  NN u(m, small_walk(m), labels_only());
   NN::state_type su = u.make_state(m);
   put_at(3);
   u.command(f.update(), su, cmd);
@@ -165,6 +173,8 @@ TEST_CASE("nearest neighbor: PD servos, torso servo on the stance hip, torque li
   o.default_kd = 50;
   o.torso_kp = 1000;
   o.torso_kd = 100;
+  o.compensate_swing_hip = false;
+  o = labels_only(o);
   const NN c(m, small_walk(m), o);
   sharon_test::sensor_fixture<planar_root> f(m);
   f.q.setZero();
@@ -184,6 +194,17 @@ TEST_CASE("nearest neighbor: PD servos, torso servo on the stance hip, torque li
   // Stance (right) hip: minus the torso PD torque (the hip torque reacts on the torso).
   const double torso = 1000 * (nd.torso_pitch - f.q[2]) - 100 * f.v[2];
   CHECK(tau[2] == Approx(-torso));
+
+  // With the swing hip compensated, the torso feels exactly the servo torque: the stance and swing
+  // hip torques (both reacting on the torso) sum to minus the torso PD torque.
+  nearest_neighbor_options oc = o;
+  oc.compensate_swing_hip = true;
+  const NN cc(m, small_walk(m), oc);
+  NN::state_type stc = cc.make_state(m);
+  Eigen::VectorXd tauc(4);
+  cc.command(f.s, stc, tauc);
+  CHECK(tauc[0] == Approx(tau[0]));
+  CHECK(tauc[2] + tauc[0] == Approx(-torso));
 
   // joint_target mode with a pd_actuator of the same gains produces the same torques.
   nearest_neighbor_options ot = o;
@@ -214,24 +235,27 @@ TEST_CASE("nearest neighbor: bad options are named", "[sharon2005][nn]") {
   nearest_neighbor_options o;
   o.num_nodes = 7;
   CHECK_THROWS_WITH(NN(m, w, o), Catch::Contains("even num_nodes, got 7"));
-  o = {};
+  o = labels_only();
   o.input = {"root_pitch", "lhip", "lknee"};
   CHECK_THROWS_WITH(NN(m, w, o), Catch::Contains("'lhip' has no mirror image"));
-  o = {};
+  o = labels_only();
   o.input = {"root_pitch", "lhipp"};
   CHECK_THROWS_WITH(NN(m, w, o), Catch::Contains("unknown input coordinate 'lhipp'"));
-  o = {};
+  o = labels_only();
   o.free_dofs = {"lhip", "neck"};
   CHECK_THROWS_WITH(NN(m, w, o), Catch::Contains("unknown free DOF 'neck'"));
-  o = {};
+  o = labels_only();
   o.input_weights = {1, 1};
   CHECK_THROWS_WITH(NN(m, w, o), Catch::Contains("input_weights"));
-  o = {};
+  o = labels_only();
   o.left_hip = "lknee_x";
   CHECK_THROWS_WITH(NN(m, w, o), Catch::Contains("no joint DOF named 'lknee_x'"));
-  o = {};
+  o = labels_only();
   o.max_advance = 12;
   CHECK_THROWS_WITH(NN(m, w, o), Catch::Contains("max_advance must be < num_nodes"));
+  o = {};  // stance from contacts needs the feet
+  o.stance_from_contacts = true;
+  CHECK_THROWS_WITH(NN(m, w, o), Catch::Contains("no body named 'lfoot'"));
 }
 
 TEST_CASE("nearest neighbor: JSON round trip is exact", "[sharon2005][nn][json]") {
@@ -239,7 +263,8 @@ TEST_CASE("nearest neighbor: JSON round trip is exact", "[sharon2005][nn][json]"
   nearest_neighbor_options o;
   o.max_advance = 2;
   o.kp = {100, 200, 300, 400};
-  NN c(m, small_walk(m), o);
+  o.compensate_swing_hip = false;
+  NN c(m, small_walk(m), labels_only(o));
   std::vector<double> p = c.parameters();
   for (std::size_t i = 0; i < p.size(); ++i) p[i] += std::sin(1.0 + static_cast<double>(i)) / 3;
   c.bind(p);
@@ -248,6 +273,8 @@ TEST_CASE("nearest neighbor: JSON round trip is exact", "[sharon2005][nn][json]"
   CHECK(back.parameters() == p);
   CHECK(back.opts().max_advance == 2);
   CHECK(back.kp()[3] == 400);
+  CHECK(!back.opts().compensate_swing_hip);
+  CHECK(!back.opts().stance_from_contacts);
   for (int i = 0; i < 12; ++i) {
     CHECK(back.node(i).location == c.node(i).location);
     CHECK(back.node(i).output == c.node(i).output);

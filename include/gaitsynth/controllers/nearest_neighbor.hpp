@@ -11,7 +11,10 @@
 /// and its target pose drives PD servos at the joints (|tau| <= 370 N m in the paper). A torso servo
 /// on the hip of the current stance leg drives the torso to the target's global orientation:
 /// the stance hip's torque is the reaction of the torque a PD servo would apply to the torso,
-///     tau_hip = -(k_t (theta_d - theta_torso) - d_t omega_torso) / (hip axis . y).
+///     tau_hip = -(k_t (theta_d - theta_torso) - d_t omega_torso) / (hip axis . y),
+/// minus the swing hip's torque (which reacts on the torso too) when compensate_swing_hip is set.
+/// The stance leg is the foot that touches the ground when exactly one does (stance_from_contacts),
+/// else the active node's label (from the keyframes' "stance").
 ///
 /// Symmetry (section VI.A): with `symmetric`, node i + n/2 is the left/right mirror image of node i,
 /// so only the first n/2 nodes are free. Their free coordinates (the `free_dofs` of the location
@@ -79,6 +82,16 @@ struct nearest_neighbor_options {
   std::string left_hip = "lhip", right_hip = "rhip";  ///< the hip DOFs the servo drives
   double torso_kp = 1000.0;  ///< N m / rad
   double torso_kd = 100.0;   ///< N m s / rad
+  /// Stance leg from the feet's contacts when exactly one foot touches the ground (the node's
+  /// stance label otherwise): the torso servo then acts on the leg that really supports the body
+  /// even when the walk runs early or late against the nodes. Off by default: the paper's stance
+  /// leg is the node's (our optimizations walked worse with it on, docs/reproductions/sharon2005.md).
+  std::string left_foot = "lfoot", right_foot = "rfoot";
+  bool stance_from_contacts = false;
+  /// Subtract the swing hip's torque from the stance hip's, so that the torso feels exactly the
+  /// servo's torque (the two hip torques both react on the torso; SIMBICON does the same). Off by
+  /// default, as the paper describes the servo on the stance hip alone.
+  bool compensate_swing_hip = false;
   /// Seconds between commands (0: every physics step).
   double period = 0.0;
 };
@@ -255,10 +268,16 @@ class nearest_neighbor_controller {
       st.active = a;
     }
     // Torso servo torque on the stance hip (reaction on the torso = PD on its world pitch).
-    int servo_dof = -1;
+    int servo_dof = -1, swing_dof = -1;
     double servo_tau = 0.0;
-    if (opt_.torso_servo && stance_[a] != stance_side::none) {
-      servo_dof = stance_[a] == stance_side::left ? lhip_ : rhip_;
+    stance_side stance = stance_[a];
+    if (opt_.stance_from_contacts && lfoot_ >= 0) {
+      const bool l = s.contact_count[lfoot_] > 0, r = s.contact_count[rfoot_] > 0;
+      if (l != r) stance = l ? stance_side::left : stance_side::right;
+    }
+    if (opt_.torso_servo && stance != stance_side::none) {
+      servo_dof = stance == stance_side::left ? lhip_ : rhip_;
+      swing_dof = stance == stance_side::left ? rhip_ : lhip_;
       const mat3& R = s.body_rotation[torso_];
       const double pitch = std::atan2(R(0, 2), R(2, 2));
       const double omega = s.body_angular_velocity[torso_].y();
@@ -266,6 +285,14 @@ class nearest_neighbor_controller {
       err = std::remainder(err, 2.0 * std::numbers::pi);
       const double t_torso = opt_.torso_kp * err - opt_.torso_kd * omega;
       servo_tau = -t_torso / hip_axis_y_[servo_dof == lhip_ ? 0 : 1];
+      if (opt_.compensate_swing_hip) {
+        // The swing hip's PD torque (as applied, after the limit) also reacts on the torso.
+        const double ts = std::clamp(kp_[swing_dof] * (out_(swing_dof, a) - q[Root::nq + swing_dof]) -
+                                         kd_[swing_dof] * v[Root::nv + swing_dof],
+                                     -opt_.torque_limit, opt_.torque_limit);
+        servo_tau -= ts * hip_axis_y_[swing_dof == lhip_ ? 0 : 1] /
+                     hip_axis_y_[servo_dof == lhip_ ? 0 : 1];
+      }
     }
     if (opt_.output == command_kind::joint_torque) {
       for (int j = 0; j < nj_; ++j) {
@@ -391,6 +418,10 @@ class nearest_neighbor_controller {
     check_argument(opt_.max_advance < n, "nearest_neighbor: max_advance must be < num_nodes (",
                    n, "), got ", opt_.max_advance);
     torso_ = opt_.torso_body.empty() ? 0 : m.body_index(opt_.torso_body);
+    if (opt_.stance_from_contacts && !opt_.left_foot.empty() && !opt_.right_foot.empty()) {
+      lfoot_ = m.body_index(opt_.left_foot);
+      rfoot_ = m.body_index(opt_.right_foot);
+    }
     if (opt_.torso_servo) {
       lhip_ = m.dof_index(opt_.left_hip);
       rhip_ = m.dof_index(opt_.right_hip);
@@ -436,7 +467,7 @@ class nearest_neighbor_controller {
   std::vector<double> in_sign_;
   std::vector<int> free_in_, free_out_;
   Eigen::VectorXd kp_, kd_;
-  int torso_ = 0, lhip_ = -1, rhip_ = -1;
+  int torso_ = 0, lhip_ = -1, rhip_ = -1, lfoot_ = -1, rfoot_ = -1;
   double hip_axis_y_[2] = {1.0, 1.0};
   Eigen::MatrixXd loc_, out_;  ///< input coordinates x nodes; joint DOFs x nodes
   std::vector<double> torso_pitch_;

@@ -11,7 +11,9 @@
 ///                   "free_dofs": [...], "max_advance": -1, "output": "joint_torque",
 ///                   "kp": [...], "kd": [...], "torque_limit": 370, "torso_servo": true,
 ///                   "torso_body": "", "left_hip": "lhip", "right_hip": "rhip",
-///                   "torso_kp": 1000, "torso_kd": 100, "period": 0, "first_node_time": 0},
+///                   "torso_kp": 1000, "torso_kd": 100, "left_foot": "lfoot",
+///                   "right_foot": "rfoot", "stance_from_contacts": true,
+///                   "compensate_swing_hip": true, "period": 0, "first_node_time": 0},
 ///       "nodes": [ {"location": {"root_pitch": 0.05, "lhip": ...}, "output": {"lhip": ...},
 ///                   "torso_pitch": 0.02, "stance": "right"},
 ///                  ...,
@@ -77,6 +79,10 @@ nlohmann::ordered_json nearest_neighbor_to_json(const model<Root>& m,
   jo["right_hip"] = o.right_hip;
   jo["torso_kp"] = o.torso_kp;
   jo["torso_kd"] = o.torso_kd;
+  jo["left_foot"] = o.left_foot;
+  jo["right_foot"] = o.right_foot;
+  jo["stance_from_contacts"] = o.stance_from_contacts;
+  jo["compensate_swing_hip"] = o.compensate_swing_hip;
   jo["period"] = o.period;
   j["options"] = jo;
   J nodes = J::array();
@@ -171,6 +177,10 @@ nearest_neighbor_controller<Root> nearest_neighbor_from_json(const model<Root>& 
   string("right_hip", o.right_hip);
   num("torso_kp", o.torso_kp);
   num("torso_kd", o.torso_kd);
+  string("left_foot", o.left_foot);
+  string("right_foot", o.right_foot);
+  boolean("stance_from_contacts", o.stance_from_contacts);
+  boolean("compensate_swing_hip", o.compensate_swing_hip);
   num("period", o.period);
 
   if (!j.contains("nodes") || !j["nodes"].is_array()) r.fail("nodes", "missing array");

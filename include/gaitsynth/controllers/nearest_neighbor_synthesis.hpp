@@ -213,6 +213,30 @@ std::vector<sim_state> target_start_states(const model<Root>& m, const keyframe_
   return out;
 }
 
+/// A start state and perturbed copies of it, for a cost that rewards robustness (section VII: "The
+/// addition of disturbances during the controller evaluation may encourage robustness"): s itself,
+/// then s with its velocity scaled by each of `velocity_scales`, then s lifted by each of `lifts`
+/// (m; the character drops onto the ground).
+template <root_joint Root>
+std::vector<sim_state> perturbed_starts(const model<Root>&, const sim_state& s,
+                                        const std::vector<double>& velocity_scales = {0.9, 1.1},
+                                        const std::vector<double>& lifts = {0.01}) {
+  std::vector<sim_state> out{s};
+  for (double k : velocity_scales) {
+    check_argument(std::isfinite(k), "perturbed_starts: velocity scale is not finite (", k, ")");
+    sim_state p = s;
+    p.v *= k;
+    out.push_back(std::move(p));
+  }
+  for (double h : lifts) {
+    check_argument(std::isfinite(h), "perturbed_starts: lift is not finite (", h, ")");
+    sim_state p = s;
+    p.q[std::is_same_v<Root, planar_root> ? 1 : 2] += h;
+    out.push_back(std::move(p));
+  }
+  return out;
+}
+
 /// How a controller fares in a long test rollout (the paper's 70 s test).
 struct walk_check {
   double seconds = 0.0;       ///< simulated time before the end or a fall, s

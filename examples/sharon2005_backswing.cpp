@@ -1,0 +1,39 @@
+// Sharon & van de Panne 2005, Figure 6c/d: a stylized walk with an extra backward swing of the
+// swing leg (forward, back, forward before foot strike). Similar poses occur twice per step, so
+// the nodes may only activate in order (each active node can hand over to its successor only),
+// 24 nodes (12 free x 12 = 144 parameters).
+//
+//   ./sharon2005_backswing [--out DIR] [--threads N] ...
+#include "gaitsynth/actuators/torque.hpp"
+#include "gaitsynth/contact/flat_terrain.hpp"
+#include "gaitsynth/integrators/semi_implicit_euler.hpp"
+#include "gaitsynth/io/keyframes_json.hpp"
+#include "gaitsynth/models/sharon2005.hpp"
+#include "gaitsynth/objectives/mass_distance.hpp"
+#include "sharon2005_common.hpp"
+
+int main(int argc, char** argv) try {
+  using namespace gaitsynth;
+  const auto c = sharon_example::parse(
+      argc, argv, "optimize the back-swing style walk (Sharon & van de Panne 2005, Fig. 6c)");
+  const planar_model m = sharon2005_human7();
+  const std::string kf_path =
+      c.keyframes.empty() ? sharon_example::data_file("backswing.keyframes.json") : c.keyframes;
+  const keyframe_motion<planar_root> target = load_keyframes(m, kf_path);
+  nearest_neighbor_options o = sharon_example::human7_options();
+  o.num_nodes = 24;
+  o.max_advance = 1;  // section VI.B: restricted activation order
+  const nearest_neighbor_controller<planar_root> c0(m, target, o);
+  rollout_options ro;
+  ro.initial_state = target.initial_state();
+  nn_problem prob{m, torque_actuator{}, c0, mass_distance<planar_root>(m, target),
+                        flat_terrain{}, semi_implicit_euler{}, ro};
+  sharon_example::set_starts(prob, c);
+  nn_synthesis_options so = sharon_example::synthesis_defaults();
+  so.evaluations_per_episode = 700;
+  return sharon_example::synthesize_and_report("sharon2005_backswing", prob, so, c,
+                                               {{"keyframes", kf_path}, {"figure", "6c"}});
+} catch (const std::exception& e) {
+  std::cerr << "error: " << e.what() << "\n";
+  return 1;
+}

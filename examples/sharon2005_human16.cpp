@@ -1,0 +1,38 @@
+// Sharon & van de Panne 2005, Figure 5c/d: the 16-link planar human walks.
+//
+// As in the paper, only the hips, knees and ankles are optimized (6 free nodes x 12 = 72
+// parameters); the upper body (back, chest, neck, arms) follows the target poses stored in the
+// nodes. Keyframes: data/sharon2005/human16_walk.keyframes.json. The torso servo drives the pelvis
+// (the root, which carries the hips) to the target's orientation.
+//
+//   ./sharon2005_human16 [--out DIR] [--threads N] ...
+#include "gaitsynth/actuators/torque.hpp"
+#include "gaitsynth/contact/flat_terrain.hpp"
+#include "gaitsynth/integrators/semi_implicit_euler.hpp"
+#include "gaitsynth/io/keyframes_json.hpp"
+#include "gaitsynth/models/sharon2005.hpp"
+#include "gaitsynth/objectives/mass_distance.hpp"
+#include "sharon2005_common.hpp"
+
+int main(int argc, char** argv) try {
+  using namespace gaitsynth;
+  const auto c = sharon_example::parse(
+      argc, argv, "optimize a walk of the 16-link human (Sharon & van de Panne 2005, Fig. 5c)");
+  const planar_model m = sharon2005_human16();
+  const std::string kf_path =
+      c.keyframes.empty() ? sharon_example::data_file("human16_walk.keyframes.json") : c.keyframes;
+  const keyframe_motion<planar_root> target = load_keyframes(m, kf_path);
+  const nearest_neighbor_options o = sharon_example::human16_options(m);
+  const nearest_neighbor_controller<planar_root> c0(m, target, o);
+  rollout_options ro;
+  ro.initial_state = target.initial_state();
+  nn_problem prob{m, torque_actuator{}, c0, mass_distance<planar_root>(m, target),
+                        flat_terrain{}, semi_implicit_euler{}, ro};
+  sharon_example::set_starts(prob, c);
+  return sharon_example::synthesize_and_report("sharon2005_human16", prob,
+                                               sharon_example::synthesis_defaults(), c,
+                                               {{"keyframes", kf_path}, {"figure", "5c"}});
+} catch (const std::exception& e) {
+  std::cerr << "error: " << e.what() << "\n";
+  return 1;
+}

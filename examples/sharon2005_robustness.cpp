@@ -1,0 +1,97 @@
+// Sharon & van de Panne 2005, Figure 8: the unmodified normal-walk controller (Fig. 5a/b) on
+// (a) a torso of 28 kg instead of 40 kg, (b) shins of 0.25 m with thighs of 0.6 m, (c) shins of
+// 0.8 m, (d) bumpy terrain with gradients up to 11 degrees that the controller cannot see. No
+// re-optimization: each variant is simulated for 70 s from the first keyframe's state (the root
+// placed so the lowest foot point touches the ground).
+//
+//   ./sharon2005_robustness [--controller FILE] [--out DIR] [--seconds S]
+//
+// Default controller: data/sharon2005/normal_walk.controller.json (written by
+// sharon2005_normal_walk). Writes DIR/sharon2005_robustness_<variant>.csv and prints one JSON line
+// per variant, then a summary line, on stdout.
+#include <filesystem>
+#include <iostream>
+#include <nlohmann/json.hpp>
+#include <string>
+
+#include "gaitsynth/actuators/torque.hpp"
+#include "gaitsynth/contact/flat_terrain.hpp"
+#include "gaitsynth/controllers/nearest_neighbor_json.hpp"
+#include "gaitsynth/controllers/nearest_neighbor_synthesis.hpp"
+#include "gaitsynth/integrators/semi_implicit_euler.hpp"
+#include "gaitsynth/io/keyframes_json.hpp"
+#include "gaitsynth/io/trajectory_csv.hpp"
+#include "gaitsynth/objectives/mass_distance.hpp"
+#include "sharon2005_scenarios.hpp"
+
+int main(int argc, char** argv) try {
+  using namespace gaitsynth;
+  std::string data = std::string(GAITSYNTH_SOURCE_DIR) + "/data/sharon2005/";
+  std::string ctrl_path = data + "normal_walk.controller.json";
+  std::filesystem::path out = "out";
+  double seconds = 70.0;
+  for (int i = 1; i < argc; ++i) {
+    const std::string a = argv[i];
+    if (a == "--controller" && i + 1 < argc) ctrl_path = argv[++i];
+    else if (a == "--out" && i + 1 < argc) out = argv[++i];
+    else if (a == "--seconds" && i + 1 < argc) seconds = std::stod(argv[++i]);
+    else {
+      std::cerr << "usage: " << argv[0] << " [--controller FILE] [--out DIR] [--seconds S]\n";
+      return a == "--help" ? 0 : 1;
+    }
+  }
+  std::filesystem::create_directories(out);
+  const planar_model nominal = sharon2005_human7();
+  const auto target = load_keyframes(nominal, data + "normal_walk.keyframes.json");
+  const auto ctrl = load_nearest_neighbor(nominal, ctrl_path);
+  const Eigen::VectorXd x = [&] {
+    const auto p = ctrl.parameters();
+    return Eigen::VectorXd(Eigen::Map<const Eigen::VectorXd>(p.data(), static_cast<Eigen::Index>(p.size())));
+  }();
+
+  int walked = 0, total = 0;
+  auto report = [&](const std::string& name, const std::string& what, const auto& m,
+                    const auto& ground) {
+    rollout_options ro;
+    ro.initial_state = sharon_scenarios::start_state_for(m, target);
+    const nn_problem prob{m, torque_actuator{}, ctrl, mass_distance<planar_root>(m, target),
+                          ground, semi_implicit_euler{}, ro};
+    trajectory traj;
+    const walk_check w = check_walk(prob, x, seconds, &traj, 40);
+    const auto csv = out / ("sharon2005_robustness_" + name + ".csv");
+    save_trajectory_csv(traj, csv.string());
+    const bool ok = !w.fell && w.average_speed > 0.3;
+    walked += ok;
+    ++total;
+    nlohmann::ordered_json j;
+    j["variant"] = name;
+    j["description"] = what;
+    j["seconds_walked"] = w.seconds;
+    j["fell"] = w.fell;
+    j["distance"] = std::round(w.distance * 1000) / 1000;
+    j["average_speed"] = std::round(w.average_speed * 1000) / 1000;
+    j["walks"] = ok;
+    j["trajectory_csv"] = csv.string();
+    std::cout << j.dump() << std::endl;
+    std::cerr << name << ": " << (ok ? "walked " : "FAILED after ") << w.seconds << " s, "
+              << w.distance << " m (" << what << ")\n";
+  };
+  report("nominal", "the 7-link human of Table I on flat ground", nominal, flat_terrain{});
+  for (const auto& v : sharon_scenarios::figure8_bodies())
+    report(v.name, v.description, sharon2005_human7(v.params), flat_terrain{});
+  const auto bumps = sharon_scenarios::bumpy_terrain();
+  report("bumpy_terrain",
+         "Fig. 8d: bumpy terrain, steepest gradient " +
+             std::to_string(sharon_scenarios::max_gradient_deg(bumps, -5.0, 110.0)) + " deg",
+         nominal, bumps);
+  nlohmann::ordered_json s;
+  s["example"] = "sharon2005_robustness";
+  s["controller"] = ctrl_path;
+  s["variants_walking"] = walked;
+  s["variants"] = total;
+  std::cout << s.dump() << std::endl;
+  return 0;
+} catch (const std::exception& e) {
+  std::cerr << "error: " << e.what() << "\n";
+  return 1;
+}

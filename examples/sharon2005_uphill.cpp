@@ -1,0 +1,38 @@
+// Sharon & van de Panne 2005, Figure 7: a controller optimized for, and walking up, a 10 degree
+// slope (12 nodes, 72 parameters). Keyframes: data/sharon2005/uphill.keyframes.json, whose stride
+// climbs with the slope.
+//
+//   ./sharon2005_uphill [--out DIR] [--threads N] ...
+#include <numbers>
+
+#include "gaitsynth/actuators/torque.hpp"
+#include "gaitsynth/contact/slope_terrain.hpp"
+#include "gaitsynth/integrators/semi_implicit_euler.hpp"
+#include "gaitsynth/io/keyframes_json.hpp"
+#include "gaitsynth/models/sharon2005.hpp"
+#include "gaitsynth/objectives/mass_distance.hpp"
+#include "sharon2005_common.hpp"
+
+int main(int argc, char** argv) try {
+  using namespace gaitsynth;
+  const auto c = sharon_example::parse(
+      argc, argv, "optimize a walk up a 10 degree slope (Sharon & van de Panne 2005, Fig. 7)");
+  const planar_model m = sharon2005_human7();
+  const std::string kf_path =
+      c.keyframes.empty() ? sharon_example::data_file("uphill.keyframes.json") : c.keyframes;
+  const keyframe_motion<planar_root> target = load_keyframes(m, kf_path);
+  const nearest_neighbor_controller<planar_root> c0(m, target, sharon_example::human7_options());
+  rollout_options ro;
+  ro.initial_state = target.initial_state();
+  const slope_terrain hill(10.0 * std::numbers::pi / 180.0);
+  nn_problem prob{m, torque_actuator{}, c0, mass_distance<planar_root>(m, target), hill,
+                        semi_implicit_euler{}, ro};
+  sharon_example::set_starts(prob, c);
+  return sharon_example::synthesize_and_report("sharon2005_uphill", prob,
+                                               sharon_example::synthesis_defaults(), c,
+                                               {{"keyframes", kf_path}, {"figure", "7a"},
+                                                {"slope_degrees", 10.0}});
+} catch (const std::exception& e) {
+  std::cerr << "error: " << e.what() << "\n";
+  return 1;
+}
