@@ -1,0 +1,110 @@
+#pragma once
+/// \file gaitsynth.hpp
+/// Everything in gaitsynth. Convenient for examples and quick experiments; a program that cares
+/// about compile time includes only the headers it uses (each header includes what it needs).
+/// The nlohmann::json readers and writers (io/keyframes_json.hpp,
+/// controllers/nearest_neighbor_json.hpp) are included only when <nlohmann/json.hpp> is available.
+/// Architecture: docs/architecture.md.
+///
+/// Not yet included: contact/height_field_terrain.hpp and contact/steps_terrain.hpp define
+/// gaitsynth::detail::uniform01(std::mt19937_64&), which optimizers/random.hpp defines too, so
+/// one translation unit cannot include both until one of them is renamed.
+
+#include "gaitsynth/dynamics.hpp"
+#include "gaitsynth/error.hpp"
+
+#include "gaitsynth/spatial/spatial.hpp"
+#include "gaitsynth/spatial/types.hpp"
+
+#include "gaitsynth/model/model.hpp"
+#include "gaitsynth/model/model_builder.hpp"
+#include "gaitsynth/model/root.hpp"
+#include "gaitsynth/model/state.hpp"
+
+#include "gaitsynth/dynamics/aba.hpp"
+#include "gaitsynth/dynamics/center_of_mass.hpp"
+#include "gaitsynth/dynamics/configuration.hpp"
+#include "gaitsynth/dynamics/crba.hpp"
+#include "gaitsynth/dynamics/energy.hpp"
+#include "gaitsynth/dynamics/jacobian.hpp"
+#include "gaitsynth/dynamics/joint_limits.hpp"
+#include "gaitsynth/dynamics/kinematics.hpp"
+#include "gaitsynth/dynamics/momentum.hpp"
+#include "gaitsynth/dynamics/rnea.hpp"
+#include "gaitsynth/dynamics/workspace.hpp"
+
+#include "gaitsynth/integrators/concept.hpp"
+#include "gaitsynth/integrators/odeint.hpp"
+#include "gaitsynth/integrators/semi_implicit_euler.hpp"
+
+#include "gaitsynth/contact/flat_terrain.hpp"
+// #include "gaitsynth/contact/height_field_terrain.hpp"  (see below)
+#include "gaitsynth/contact/penalty_contact.hpp"
+#include "gaitsynth/contact/push.hpp"
+#include "gaitsynth/contact/slope_terrain.hpp"
+// #include "gaitsynth/contact/steps_terrain.hpp"  (see below)
+#include "gaitsynth/contact/terrain.hpp"
+
+#include "gaitsynth/actuators/concept.hpp"
+#include "gaitsynth/actuators/pd.hpp"
+#include "gaitsynth/actuators/torque.hpp"
+
+#include "gaitsynth/controllers/concept.hpp"
+#include "gaitsynth/controllers/keyframes.hpp"
+#include "gaitsynth/controllers/nearest_neighbor.hpp"
+#include "gaitsynth/controllers/nearest_neighbor_synthesis.hpp"
+#include "gaitsynth/controllers/pose_hold.hpp"
+#include "gaitsynth/controllers/sensors.hpp"
+
+#include "gaitsynth/objectives/concept.hpp"
+#include "gaitsynth/objectives/distance.hpp"
+#include "gaitsynth/objectives/mass_distance.hpp"
+#include "gaitsynth/objectives/weighted_sum.hpp"
+
+#include "gaitsynth/rollout/options.hpp"
+#include "gaitsynth/rollout/recorder.hpp"
+#include "gaitsynth/rollout/result.hpp"
+#include "gaitsynth/rollout/rollout.hpp"
+#include "gaitsynth/rollout/termination.hpp"
+#include "gaitsynth/rollout/trajectory.hpp"
+
+#include "gaitsynth/optimizers/checkpoint.hpp"
+#include "gaitsynth/optimizers/cmaes.hpp"
+#include "gaitsynth/optimizers/concept.hpp"
+#include "gaitsynth/optimizers/continuation.hpp"
+#include "gaitsynth/optimizers/evaluators.hpp"
+#include "gaitsynth/optimizers/minimize.hpp"
+#include "gaitsynth/optimizers/optimizers.hpp"
+#include "gaitsynth/optimizers/parameter_space.hpp"
+#include "gaitsynth/optimizers/random.hpp"
+#include "gaitsynth/optimizers/restarts.hpp"
+#include "gaitsynth/optimizers/sds.hpp"
+#include "gaitsynth/optimizers/test_functions.hpp"
+
+#include "gaitsynth/models/anthropometry.hpp"
+#include "gaitsynth/models/models.hpp"
+#include "gaitsynth/models/sharon2005.hpp"
+#include "gaitsynth/models/standing.hpp"
+#include "gaitsynth/models/wang2009.hpp"
+#include "gaitsynth/models/wang2012.hpp"
+#include "gaitsynth/models/wu2010.hpp"
+
+#include "gaitsynth/io/bvh.hpp"
+#include "gaitsynth/io/csv.hpp"
+#include "gaitsynth/io/mjcf.hpp"
+#include "gaitsynth/io/mjcf_replay.hpp"
+#include "gaitsynth/io/trajectory_csv.hpp"
+
+#include "gaitsynth/viz/cli.hpp"
+#include "gaitsynth/viz/convergence_plot_svg.hpp"
+#include "gaitsynth/viz/filmstrip_svg.hpp"
+#include "gaitsynth/viz/gait_cycles.hpp"
+#include "gaitsynth/viz/gait_plot_svg.hpp"
+#include "gaitsynth/viz/html_player.hpp"
+#include "gaitsynth/viz/scene.hpp"
+#include "gaitsynth/viz/svg.hpp"
+
+#if __has_include(<nlohmann/json.hpp>)
+#include "gaitsynth/controllers/nearest_neighbor_json.hpp"
+#include "gaitsynth/io/keyframes_json.hpp"
+#endif
