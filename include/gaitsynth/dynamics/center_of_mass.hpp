@@ -26,8 +26,8 @@ vec3 com_velocity(const model<Root>& m, const workspace<Root>& ws) {
   double mass = 0.0;
   for (int b = 0; b < m.num_bodies(); ++b) {
     const spatial::rigid_inertia& I = s.body_inertia[b];
-    const vec6& V = s.V[s.body_node[b]];
-    p += I.mass * (V.template tail<3>() + V.template head<3>().cross(I.com));
+    const detail::svec& V = s.V[s.body_node[b]];
+    p += I.mass * (detail::lin(V) + detail::ang(V).cross(I.com));
     mass += I.mass;
   }
   return p / mass;

@@ -22,29 +22,31 @@ const Eigen::MatrixXd& crba(const model<Root>& m, workspace<Root>& ws,
   for (int n = 0; n < nn; ++n) {
     const int b = s.node_body[n];
     if (b >= 0)
-      s.IA[n] = s.body_inertia[b].matrix();
+      s.IA[n] = s.body_I[b];
     else
-      s.IA[n].setZero();
+      detail::set_zero(s.IA[n]);
   }
-  for (int n = nn - 1; n >= 1; --n) s.IA[s.node_parent[n]] += s.IA[n];
+  for (int n = nn - 1; n >= 1; --n)
+    for (int k = 0; k < 6; ++k) s.IA[s.node_parent[n]][k] += s.IA[n][k];
   Eigen::MatrixXd& M = ws.M;
   M.setZero();
   for (int n = 1; n < nn; ++n) {
     const int i = nvr + n - 1;
-    const vec6 F = s.IA[n] * s.S[n];
-    M(i, i) = s.S[n].dot(F);
+    const detail::svec F = detail::op_times(s.IA[n], s.S[n]);
+    M(i, i) = detail::sdot(s.S[n], F);
     for (int k = s.node_parent[n]; k > 0; k = s.node_parent[k]) {
       const int jk = nvr + k - 1;
-      M(jk, i) = M(i, jk) = s.S[k].dot(F);
+      M(jk, i) = M(i, jk) = detail::sdot(s.S[k], F);
     }
     if constexpr (nvr > 0) {
-      const Eigen::Matrix<double, nvr, 1> col = s.S0.transpose() * F;
+      const Eigen::Matrix<double, nvr, 1> col = s.S0.transpose() * detail::to_vec6(F);
       M.col(i).template head<nvr>() = col;
       M.row(i).template head<nvr>() = col.transpose();
     }
   }
   if constexpr (nvr > 0) {
-    const Eigen::Matrix<double, nvr, nvr> M0 = s.S0.transpose() * s.IA[0] * s.S0;
+    const mat6 IA0 = detail::to_mat6(s.IA[0]);
+    const Eigen::Matrix<double, nvr, nvr> M0 = s.S0.transpose() * IA0 * s.S0;
     M.template topLeftCorner<nvr, nvr>() = 0.5 * (M0 + M0.transpose());  // exactly symmetric
   }
   return M;

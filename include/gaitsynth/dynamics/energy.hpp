@@ -11,7 +11,7 @@ double kinetic_energy(const model<Root>& m, const workspace<Root>& ws) {
   const auto& s = ws.scratch;
   double e = 0.0;
   for (int b = 0; b < m.num_bodies(); ++b)
-    e += s.body_inertia[b].kinetic_energy(s.V[s.body_node[b]]);
+    e += 0.5 * detail::sdot(s.V[s.body_node[b]], detail::momentum_of(s.body_inertia[b], s.V[s.body_node[b]]));
   return e;
 }
 

@@ -26,8 +26,8 @@ void point_jacobian(const model<Root>& m, workspace<Root>& ws,
   J.setZero();
   // Column of a motion axis S about the reference: velocity of the point r is S.lin + S.ang x r.
   for (int n = s.body_node[body]; n > 0; n = s.node_parent[n]) {
-    const vec6& S = s.S[n];
-    J.col(nvr + n - 1) = S.template tail<3>() + S.template head<3>().cross(r);
+    const detail::svec& S = s.S[n];
+    J.col(nvr + n - 1) = detail::lin(S) + detail::ang(S).cross(r);
   }
   if constexpr (nvr > 0) {
     for (int i = 0; i < nvr; ++i) {
@@ -53,7 +53,7 @@ void body_orientation_jacobian(const model<Root>& m, workspace<Root>& ws,
   constexpr int nvr = Root::nv;
   J.setZero();
   for (int n = s.body_node[body]; n > 0; n = s.node_parent[n])
-    J.col(nvr + n - 1) = s.S[n].template head<3>();
+    J.col(nvr + n - 1) = detail::ang(s.S[n]);
   if constexpr (nvr > 0) J.template leftCols<nvr>() = s.S0.template topRows<3>();
 }
 

@@ -10,21 +10,22 @@
 #include <cmath>
 
 #include "gaitsynth/dynamics/workspace.hpp"
+#include "gaitsynth/spatial/sincos.hpp"
 
 namespace gaitsynth {
 
 namespace detail {
 
 /// Rotation by angle t about the unit axis a (Rodrigues): c I + s [a]x + (1 - c) a a^T.
-/// Returns R * rot(a, t) without forming rot(a, t), given Ra = R * a.
-inline mat3 rotate_intrinsic(const mat3& R, const vec3& a, const vec3& Ra, double t) {
-  const double s = std::sin(t), c = std::cos(t);
+/// Returns R * rot(a, t) without forming rot(a, t), given Ra = R * a, s = sin t, c = cos t.
+inline mat3 rotate_intrinsic(const mat3& R, const vec3& a, const vec3& Ra, double s, double c) {
   mat3 out;
   // R [a]x: column i is R (a x e_i).
   out.col(0) = a.z() * R.col(1) - a.y() * R.col(2);
   out.col(1) = a.x() * R.col(2) - a.z() * R.col(0);
   out.col(2) = a.y() * R.col(0) - a.x() * R.col(1);
-  out = c * R + s * out + ((1.0 - c) * Ra) * a.transpose();
+  const vec3 k = (1.0 - c) * Ra;
+  for (int i = 0; i < 3; ++i) out.col(i) = c * R.col(i) + s * out.col(i) + a[i] * k;
   return out;
 }
 
@@ -72,7 +73,11 @@ void update_poses(const model<Root>& m, workspace<Root>& ws, const Q& q) {
   {
     const body& b0 = m.bodies[0];
     s.body_inertia[0] = {b0.mass, R0 * b0.com, R0 * b0.inertia * R0.transpose()};
+    inertia_matrix(s.body_inertia[0], s.body_I[0]);
   }
+  // All sines and cosines first, batched and vectorized (spatial/sincos.hpp), off the rotation
+  // chain.
+  spatial::sincos_batch(q.data() + nqr, s.sin_q.data(), s.cos_q.data(), s.nj);
   const int nb = m.num_bodies();
   for (int b = 1; b < nb; ++b) {
     const body& bd = m.bodies[b];
@@ -81,17 +86,30 @@ void update_poses(const model<Root>& m, workspace<Root>& ws, const Q& q) {
     mat3 R = Rp;
     for (int k = 0; k < bd.num_dofs; ++k) {
       const int j = bd.first_dof + k;
-      const vec3& a = m.dofs[j].axis;
-      const vec3 w = R * a;  // world axis; invariant under its own rotation
-      R = rotate_intrinsic(R, a, w, q[nqr + j]);
-      vec6& Sj = s.S[j + 1];
-      Sj.template head<3>() = w;
-      Sj.template tail<3>() = rel.cross(w);
+      const double c = s.cos_q[j];
+      const int kind = s.dof_axis_kind[j];
+      vec3 w;  // world axis; invariant under its own rotation
+      if (kind < 3) {
+        // Rotation about a coordinate axis e_k: only the other two columns of R mix.
+        const double sg = s.dof_axis_sign[j], sn = sg * s.sin_q[j];
+        const int k1 = (kind + 1) % 3, k2 = (kind + 2) % 3;
+        w = sg * R.col(kind);
+        const vec3 r1 = R.col(k1), r2 = R.col(k2);
+        R.col(k1) = c * r1 + sn * r2;
+        R.col(k2) = c * r2 - sn * r1;
+      } else {
+        const vec3& a = m.dofs[j].axis;
+        w = R * a;
+        R = rotate_intrinsic(R, a, w, s.sin_q[j], c);
+      }
+      s.S[j + 1] = make_svec(w, rel.cross(w));
     }
     ws.body_rotation[b] = R;
     s.body_rel[b] = rel;
     ws.body_position[b] = p0 + rel;
     s.body_inertia[b] = {bd.mass, rel + R * bd.com, R * bd.inertia * R.transpose()};
+    // The 6x6 inertia is independent work that fills the gaps of the latency-bound rotation chain.
+    inertia_matrix(s.body_inertia[b], s.body_I[b]);
   }
 }
 
@@ -101,27 +119,28 @@ void update_velocities(const model<Root>& m, workspace<Root>& ws, const Vv& v) {
   auto& s = ws.scratch;
   constexpr int nvr = Root::nv;
   if constexpr (nvr > 0) {
-    s.V[0] = s.S0 * v.template head<nvr>();
+    const vec6 V0 = s.S0 * v.template head<nvr>();
+    const vec3 w = V0.template head<3>(), vo = V0.template segment<3>(3);
+    s.V[0] = make_svec(w, vo);
     // Sdot v of the root about the (instantaneously fixed) reference point: [0; -omega x v_ref].
-    s.C[0].template head<3>().setZero();
-    s.C[0].template tail<3>() = -s.V[0].template head<3>().cross(s.V[0].template tail<3>());
+    s.C[0] = make_svec(vec3::Zero(), -w.cross(vo));
   } else {
     s.V[0].setZero();
     s.C[0].setZero();
   }
   const int nn = s.nj + 1;
   for (int n = 1; n < nn; ++n) {
-    const vec6 vj = s.S[n] * v[nvr + n - 1];
-    const vec6& vp = s.V[s.node_parent[n]];
+    const svec vj = s.S[n] * v[nvr + n - 1];
+    const svec& vp = s.V[s.node_parent[n]];
     s.V[n] = vp + vj;
-    s.C[n] = spatial::cross_motion(vp, vj);  // Featherstone eq. 7.35 (c = v x S qdot)
+    s.C[n] = cross_motion(vp, vj);  // Featherstone eq. 7.35 (c = v x S qdot)
   }
   const int nb = m.num_bodies();
   for (int b = 0; b < nb; ++b) {
-    const vec6& Vb = s.V[s.body_node[b]];
-    ws.body_angular_velocity[b] = Vb.template head<3>();
-    ws.body_linear_velocity[b] =
-        Vb.template tail<3>() + Vb.template head<3>().cross(s.body_rel[b]);
+    const svec& Vb = s.V[s.body_node[b]];
+    ws.body_angular_velocity[b] = ang(Vb);
+    ws.body_linear_velocity[b] = lin(Vb) + ang(Vb).cross(s.body_rel[b]);
+    s.body_bias[b] = cross_force(Vb, op_times(s.body_I[b], Vb));  // v x* I v (eq. 7.38)
   }
 }
 

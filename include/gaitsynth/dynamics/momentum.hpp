@@ -20,7 +20,7 @@ momentum centroidal_momentum(const model<Root>& m, const workspace<Root>& ws) {
   double mass = 0.0;
   for (int b = 0; b < m.num_bodies(); ++b) {
     const spatial::rigid_inertia& I = s.body_inertia[b];
-    h += I.momentum(s.V[s.body_node[b]]);
+    h += detail::to_vec6(detail::momentum_of(I, s.V[s.body_node[b]]));
     c += I.mass * I.com;
     mass += I.mass;
   }

@@ -15,10 +15,10 @@ void rnea_passes(const model<Root>& m, workspace<Root>& ws, const double* a, boo
   auto& s = ws.scratch;
   constexpr int nvr = Root::nv;
   const int nn = s.nj + 1;
-  const vec6 a_base = base_acceleration(m);
+  const svec a_base = base_acceleration(m);
   if constexpr (nvr > 0) {
     s.A[0] = a_base + s.C[0];
-    if (a) s.A[0] += s.S0 * Eigen::Map<const Eigen::Matrix<double, nvr, 1>>(a);
+    if (a) s.A[0].template head<6>() += s.S0 * Eigen::Map<const Eigen::Matrix<double, nvr, 1>>(a);
   } else {
     s.A[0] = a_base;
   }
@@ -30,18 +30,17 @@ void rnea_passes(const model<Root>& m, workspace<Root>& ws, const double* a, boo
   for (int n = 0; n < nn; ++n) {
     const int b = s.node_body[n];
     if (b >= 0) {
-      const spatial::rigid_inertia& I = s.body_inertia[b];
-      s.pA[n] = I.momentum(s.A[n]) + spatial::cross_force(s.V[n], I.momentum(s.V[n]));
+      s.pA[n] = op_times(s.body_I[b], s.A[n]) + s.body_bias[b];
       if (with_external) s.pA[n] -= external_force_at_ref(ws, b);
     } else {
       s.pA[n].setZero();
     }
   }
   for (int n = nn - 1; n >= 1; --n) {
-    out[nvr + n - 1] = s.S[n].dot(s.pA[n]);
+    out[nvr + n - 1] = sdot(s.S[n], s.pA[n]);
     s.pA[s.node_parent[n]] += s.pA[n];
   }
-  if constexpr (nvr > 0) out.template head<nvr>() = s.S0.transpose() * s.pA[0];
+  if constexpr (nvr > 0) out.template head<nvr>() = s.S0.transpose() * to_vec6(s.pA[0]);
 }
 
 }  // namespace detail
@@ -104,6 +103,7 @@ const Eigen::VectorXd& gravity_forces(const model<Root>& m, workspace<Root>& ws,
   auto& s = ws.scratch;
   for (auto& x : s.V) x.setZero();
   for (auto& x : s.C) x.setZero();
+  for (auto& x : s.body_bias) x.setZero();
   s.level = 1;  // the velocities in the scratch are no longer those of v_cache
   detail::rnea_passes(m, ws, nullptr, false, ws.bias);
   return ws.bias;

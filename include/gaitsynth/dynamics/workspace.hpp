@@ -16,6 +16,8 @@
 /// node n >= 1 is joint DOF n - 1.
 #include <Eigen/Cholesky>
 #include <Eigen/Core>
+#include <array>
+#include <cmath>
 #include <limits>
 #include <vector>
 
@@ -28,6 +30,91 @@ namespace gaitsynth {
 
 namespace detail {
 
+/// Padded spatial vector [angular (3); linear (3); 0; 0]. Eight doubles are one AVX-512 register
+/// (two AVX2 ones), so the 6D operations of the passes below compile to a few full-width
+/// instructions instead of 4 + 2 split packets; the padding is kept at zero.
+using svec = Eigen::Matrix<double, 8, 1>;
+/// Padded spatial 6x6 operator stored by columns: IA[k] is column k as a padded spatial vector.
+/// (An array of full vectors, not an 8x6 matrix: Eigen then uses full-width packets for every
+/// column operation.)
+using smat = std::array<svec, 6>;
+
+inline auto ang(svec& x) { return x.template head<3>(); }
+inline auto ang(const svec& x) { return x.template head<3>(); }
+inline auto lin(svec& x) { return x.template segment<3>(3); }
+inline auto lin(const svec& x) { return x.template segment<3>(3); }
+inline svec make_svec(const vec3& a, const vec3& l) {
+  svec x;
+  x[0] = a[0];
+  x[1] = a[1];
+  x[2] = a[2];
+  x[3] = l[0];
+  x[4] = l[1];
+  x[5] = l[2];
+  x[6] = 0.0;
+  x[7] = 0.0;
+  return x;
+}
+inline vec6 to_vec6(const svec& x) { return x.template head<6>(); }
+
+/// a . b over the six spatial components (written out: a pairwise sum vectorizes well and avoids
+/// GCC 12's false -Wmaybe-uninitialized inside Eigen's AVX-512 horizontal reduction).
+inline double sdot(const svec& a, const svec& b) {
+  const svec p = a.cwiseProduct(b);
+  return ((p[0] + p[1]) + (p[2] + p[3])) + (p[4] + p[5]);
+}
+
+/// v x m (Featherstone eq. 2.31) on padded vectors.
+inline svec cross_motion(const svec& v, const svec& m) {
+  const vec3 w = ang(v), vo = lin(v), mw = ang(m), mv = lin(m);
+  return make_svec(w.cross(mw), w.cross(mv) + vo.cross(mw));
+}
+/// v x* f (eq. 2.32) on padded vectors.
+inline svec cross_force(const svec& v, const svec& f) {
+  const vec3 w = ang(v), vo = lin(v), n = ang(f), fl = lin(f);
+  return make_svec(w.cross(n) + vo.cross(fl), w.cross(fl));
+}
+/// I v for a compact rigid inertia (no 6x6 matrix).
+inline svec momentum_of(const spatial::rigid_inertia& I, const svec& v) {
+  const vec3 w = ang(v);
+  const vec3 l = I.mass * (lin(v) + w.cross(I.com));
+  return make_svec(I.inertia_com * w + I.com.cross(l), l);
+}
+/// The padded 6x6 matrix of a compact rigid inertia (Featherstone eq. 2.63):
+/// [Ic + m (|c|^2 1 - c c^T), m [c]x; m [c]x^T, m 1].
+inline void inertia_matrix(const spatial::rigid_inertia& I, smat& out) {
+  const double m = I.mass;
+  const vec3 c = I.com;
+  const vec3 mc = m * c;
+  const mat3 A = I.inertia_com + m * (c.squaredNorm() * mat3::Identity() - c * c.transpose());
+  // Columns 0-2: [A e_k; m [c]x^T e_k] with m [c]x^T e_k = m (e_k x c)... written out:
+  out[0] = make_svec(A.col(0), vec3(0.0, -mc.z(), mc.y()));
+  out[1] = make_svec(A.col(1), vec3(mc.z(), 0.0, -mc.x()));
+  out[2] = make_svec(A.col(2), vec3(-mc.y(), mc.x(), 0.0));
+  // Columns 3-5: [m [c]x e_k; m e_k].
+  out[3] = make_svec(vec3(0.0, mc.z(), -mc.y()), vec3(m, 0.0, 0.0));
+  out[4] = make_svec(vec3(-mc.z(), 0.0, mc.x()), vec3(0.0, m, 0.0));
+  out[5] = make_svec(vec3(mc.y(), -mc.x(), 0.0), vec3(0.0, 0.0, m));
+}
+inline void set_zero(smat& A) {
+  for (auto& c : A) c.setZero();
+}
+/// y = A x for a padded operator (one full-width FMA per column).
+inline svec op_times(const smat& A, const svec& x) {
+  // Pairwise sums: the ABA passes are latency bound along the tree, so a short dependency chain
+  // (mul, fma, add, add) beats six chained FMAs.
+  const svec y01 = A[0] * x[0] + A[1] * x[1];
+  const svec y23 = A[2] * x[2] + A[3] * x[3];
+  const svec y45 = A[4] * x[4] + A[5] * x[5];
+  return (y01 + y23) + y45;
+}
+/// The unpadded 6x6 matrix.
+inline mat6 to_mat6(const smat& A) {
+  mat6 M;
+  for (int k = 0; k < 6; ++k) M.col(k) = A[k].template head<6>();
+  return M;
+}
+
 /// Everything the algorithms keep between passes. Internal: names and layout may change.
 template <root_joint Root>
 struct dynamics_scratch {
@@ -35,28 +122,37 @@ struct dynamics_scratch {
   using root_subspace = Eigen::Matrix<double, 6, (nvr > 0 ? nvr : 1)>;
 
   // ---- constants derived from the model at make_workspace --------------------------------------
-  const void* model_id = nullptr;   ///< the model this workspace was made for (identity check)
+  const void* model_id = nullptr;   ///< the model the cached kinematics belong to
   int nb = 0, nj = 0;               ///< bodies, joint DOFs
   std::vector<int> node_parent;     ///< per node (nj + 1): parent node, -1 for node 0
   std::vector<int> node_body;       ///< per node: body whose inertia the node carries, -1 if none
   std::vector<int> body_node;       ///< per body: node its inertia is attached to (its last DOF)
+  /// per joint DOF: 0, 1, 2 if the axis is +-x, +-y, +-z of the body frame (a rotation then mixes
+  /// two columns only), 3 for a general axis; dof_axis_sign is the sign of a coordinate axis.
+  std::vector<int> dof_axis_kind;
+  std::vector<double> dof_axis_sign;
 
   // ---- kinematics (forward_kinematics) ----------------------------------------------------------
   vec3 ref = vec3::Zero();          ///< reference point (root body origin), world
   std::vector<vec3> body_rel;       ///< body origin relative to ref, world axes
+  std::vector<double> sin_q, cos_q; ///< per joint DOF: sin and cos of its angle
   std::vector<spatial::rigid_inertia> body_inertia;  ///< per body, world axes, about ref
-  std::vector<vec6> S;              ///< per node (index 0 unused): joint motion axis, about ref
+  std::vector<smat> body_I;         ///< per body: 6x6 spatial inertia (world axes, about ref)
+  std::vector<svec> body_bias;      ///< per body: v x* I v (velocity-product force)
+  std::vector<svec> S;              ///< per node (index 0 unused): joint motion axis, about ref
   root_subspace S0 = root_subspace::Zero();  ///< root joint motion subspace (6 x Root::nv)
-  std::vector<vec6> V;              ///< per node: spatial velocity
-  std::vector<vec6> C;              ///< per node: velocity-product acceleration (Sdot qdot)
+  std::vector<svec> V;              ///< per node: spatial velocity
+  std::vector<svec> C;              ///< per node: velocity-product acceleration (Sdot qdot)
 
   // ---- articulated-body / recursive Newton-Euler passes -----------------------------------------
-  std::vector<mat6> IA;     ///< per node: articulated inertia (ABA) / composite inertia (CRBA)
-  std::vector<vec6> pA;     ///< per node: bias force (ABA) / body force (RNEA)
-  std::vector<vec6> U;      ///< per node: IA * S
+  std::vector<smat> IA;     ///< per node: articulated inertia (ABA) / composite inertia (CRBA)
+  std::vector<svec> pA;     ///< per node: bias force (ABA) / body force (RNEA)
+  std::vector<svec> U;      ///< per node: IA * S
+  std::vector<svec> Uacc;   ///< per node: IA S assembled ahead from the children (ABA look-ahead)
+  std::vector<double> Dacc; ///< per node: S^T IA S assembled ahead from the children
   std::vector<double> Dinv; ///< per node: 1 / (S^T IA S)
   std::vector<double> u;    ///< per node: tau - S^T pA
-  std::vector<vec6> A;      ///< per node: spatial acceleration (gravity included as base accel.)
+  std::vector<svec> A;      ///< per node: spatial acceleration (gravity included as base accel.)
 
   // ---- cache of the configuration the kinematics were computed for ------------------------------
   Eigen::VectorXd q_cache, v_cache;
@@ -120,17 +216,35 @@ workspace<Root> make_workspace(const model<Root>& m) {
     s.body_node[b] = parent_node;
     s.node_body[parent_node] = b;
   }
+  s.dof_axis_kind.assign(nj, 3);
+  s.dof_axis_sign.assign(nj, 1.0);
+  for (int j = 0; j < nj; ++j) {
+    const vec3& a = m.dofs[j].axis;
+    for (int k = 0; k < 3; ++k)
+      if (std::abs(a[k]) == 1.0 && a[(k + 1) % 3] == 0.0 && a[(k + 2) % 3] == 0.0) {
+        s.dof_axis_kind[j] = k;
+        s.dof_axis_sign[j] = a[k];
+      }
+  }
   s.body_rel.assign(nb, vec3::Zero());
+  s.sin_q.assign(nj, 0.0);
+  s.cos_q.assign(nj, 1.0);
   s.body_inertia.assign(nb, spatial::rigid_inertia{});
-  s.S.assign(nn, vec6::Zero());
-  s.V.assign(nn, vec6::Zero());
-  s.C.assign(nn, vec6::Zero());
-  s.IA.assign(nn, mat6::Zero());
-  s.pA.assign(nn, vec6::Zero());
-  s.U.assign(nn, vec6::Zero());
+  s.S.assign(nn, detail::svec::Zero());
+  s.V.assign(nn, detail::svec::Zero());
+  s.C.assign(nn, detail::svec::Zero());
+  detail::smat zero6;
+  detail::set_zero(zero6);
+  s.IA.assign(nn, zero6);
+  s.pA.assign(nn, detail::svec::Zero());
+  s.U.assign(nn, detail::svec::Zero());
+  s.Uacc.assign(nn, detail::svec::Zero());
+  s.Dacc.assign(nn, 0.0);
+  s.body_I.assign(nb, zero6);
+  s.body_bias.assign(nb, detail::svec::Zero());
   s.Dinv.assign(nn, 0.0);
   s.u.assign(nn, 0.0);
-  s.A.assign(nn, vec6::Zero());
+  s.A.assign(nn, detail::svec::Zero());
   s.q_cache = Eigen::VectorXd::Constant(m.nq(), std::numeric_limits<double>::quiet_NaN());
   s.v_cache = Eigen::VectorXd::Constant(nv, std::numeric_limits<double>::quiet_NaN());
   s.level = 0;
