@@ -1,6 +1,7 @@
 // Spatial algebra identities (Featherstone 2008, chapter 2).
 #include <catch2/catch.hpp>
 
+#include "gaitsynth/spatial/sincos.hpp"
 #include "gaitsynth/spatial/spatial.hpp"
 #include "support/dynamics_support.hpp"
 
@@ -75,4 +76,32 @@ TEST_CASE("rigid-body inertia: matrix, momentum, energy, transform and sum", "[s
                           gaitsynth::testing::random_inertia(rng, 0.2)};
     REQUIRE_THAT(Eigen::MatrixXd((I + J).matrix()), is_approx(M + J.matrix(), 1e-13, 1e-13));
   }
+}
+
+TEST_CASE("sincos_batch agrees with libm to rounding and falls back outside its range", "[spatial]") {
+  std::mt19937 rng(4);
+  for (double range : {0.5, 4.0, 100.0, 1e5, 1e7}) {
+    std::uniform_real_distribution<double> u(-range, range);
+    std::vector<double> x(2000), s(x.size()), c(x.size());
+    for (auto& xi : x) xi = u(rng);
+    sincos_batch(x.data(), s.data(), c.data(), static_cast<int>(x.size()));
+    for (std::size_t i = 0; i < x.size(); ++i) {
+      CAPTURE(x[i]);
+      REQUIRE(std::abs(s[i] - std::sin(x[i])) <= 2.3e-16);
+      REQUIRE(std::abs(c[i] - std::cos(x[i])) <= 2.3e-16);
+    }
+  }
+  // Quadrant boundaries and special values.
+  const double pi = 3.14159265358979323846;
+  std::vector<double> x{0.0, pi / 4, pi / 2, 3 * pi / 4, pi, -pi / 2, 2 * pi, 1e300,
+                        std::numeric_limits<double>::infinity(),
+                        std::numeric_limits<double>::quiet_NaN()};
+  std::vector<double> s(x.size()), c(x.size());
+  sincos_batch(x.data(), s.data(), c.data(), static_cast<int>(x.size()));
+  for (std::size_t i = 0; i + 2 < x.size(); ++i) {
+    REQUIRE(std::abs(s[i] - std::sin(x[i])) <= 2.3e-16);
+    REQUIRE(std::abs(c[i] - std::cos(x[i])) <= 2.3e-16);
+  }
+  REQUIRE(std::isnan(s[8]));
+  REQUIRE(std::isnan(c[9]));
 }

@@ -4,6 +4,7 @@
 /// joint-configuration.hpp): the floating root's orientation is a unit quaternion (w, x, y, z) whose
 /// velocity is the body-frame angular velocity, so q is not simply q + dt v.
 #include <Eigen/Geometry>
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <random>

@@ -12,7 +12,10 @@
 namespace gaitsynth::spatial {
 
 namespace detail {
-inline void sincos_kernel(double x, double& s_out, double& c_out) {
+inline void sincos_kernel(double x_in, double& s_out, double& c_out) {
+  // Out-of-range arguments (and NaN) are replaced by 0 here, so the conversion to an integer below
+  // is always defined; sincos_batch recomputes them with libm.
+  const double x = std::abs(x_in) <= 1048576.0 ? x_in : 0.0;
   constexpr double two_over_pi = 6.36619772367581382433e-01;
   constexpr double pio2_1 = 1.57079632673412561417e+00;  // first 33 bits of pi/2
   constexpr double pio2_2 = 6.07710050630396597660e-11;  // next 33 bits
