@@ -5,10 +5,6 @@
 /// The nlohmann::json readers and writers (io/keyframes_json.hpp,
 /// controllers/nearest_neighbor_json.hpp) are included only when <nlohmann/json.hpp> is available.
 /// Architecture: docs/architecture.md.
-///
-/// Not yet included: contact/height_field_terrain.hpp and contact/steps_terrain.hpp define
-/// gaitsynth::detail::uniform01(std::mt19937_64&), which optimizers/random.hpp defines too, so
-/// one translation unit cannot include both until one of them is renamed.
 
 #include "gaitsynth/dynamics.hpp"
 #include "gaitsynth/error.hpp"
@@ -38,11 +34,11 @@
 #include "gaitsynth/integrators/semi_implicit_euler.hpp"
 
 #include "gaitsynth/contact/flat_terrain.hpp"
-// #include "gaitsynth/contact/height_field_terrain.hpp"  (see below)
+#include "gaitsynth/contact/height_field_terrain.hpp"
 #include "gaitsynth/contact/penalty_contact.hpp"
 #include "gaitsynth/contact/push.hpp"
 #include "gaitsynth/contact/slope_terrain.hpp"
-// #include "gaitsynth/contact/steps_terrain.hpp"  (see below)
+#include "gaitsynth/contact/steps_terrain.hpp"
 #include "gaitsynth/contact/terrain.hpp"
 
 #include "gaitsynth/actuators/concept.hpp"

@@ -26,18 +26,10 @@
 #include <vector>
 
 #include "gaitsynth/contact/terrain.hpp"
+#include "gaitsynth/detail/uniform01.hpp"
 #include "gaitsynth/error.hpp"
 
 namespace gaitsynth {
-
-namespace detail {
-/// Uniform double in [0, 1) from the top 53 bits of a 64-bit Mersenne twister. std::mt19937_64's
-/// sequence is fixed by the standard while std::uniform_real_distribution's mapping is not, so
-/// this gives the same terrain for the same seed on every standard library.
-inline double uniform01(std::mt19937_64& rng) {
-  return static_cast<double>(rng() >> 11) * 0x1.0p-53;
-}
-}  // namespace detail
 
 class height_field_terrain {
  public:

@@ -33,7 +33,8 @@
 #include <random>
 #include <vector>
 
-#include "gaitsynth/contact/height_field_terrain.hpp"  // detail::uniform01
+#include "gaitsynth/contact/height_field_terrain.hpp"
+#include "gaitsynth/detail/uniform01.hpp"
 #include "gaitsynth/contact/terrain.hpp"
 #include "gaitsynth/error.hpp"
 

@@ -13,12 +13,9 @@
 #include <cstdint>
 #include <random>
 
-namespace gaitsynth::detail {
+#include "gaitsynth/detail/uniform01.hpp"
 
-/// Uniform double in [0, 1) with 53 random bits.
-inline double uniform01(std::mt19937_64& rng) {
-  return static_cast<double>(rng() >> 11) * 0x1.0p-53;
-}
+namespace gaitsynth::detail {
 
 /// Uniform double in (0, 1] (safe for log).
 inline double uniform01_open_below(std::mt19937_64& rng) {
