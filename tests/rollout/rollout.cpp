@@ -6,6 +6,8 @@
 
 #include <cmath>
 #include <limits>
+#include <numbers>
+#include <string>
 #include <vector>
 
 #include "gaitsynth/actuators/pd.hpp"
@@ -582,4 +584,85 @@ TEST_CASE("bad input to a rollout throws std::invalid_argument naming the value"
                     Catch::Contains("output kind"));
   // And a good rollout after all that still works with the same scratch.
   CHECK(run(good, p).reason == stop_reason::horizon);
+}
+
+namespace {
+/// Counts, per step, whether body 1's toe top touched, and any disagreement between the per-body
+/// flags, the any-toe flag and the per-body contact counts.
+struct toe_top_probe {
+  struct accumulator_type {
+    int toe_top_steps = 0, foot_toe_top_steps = 0, mismatches = 0;
+  };
+  template <root_joint Root>
+  accumulator_type make_accumulator(const model<Root>&) const {
+    return {};
+  }
+  template <root_joint Root>
+  void accumulate(accumulator_type& a, const step_view<Root>& v) const {
+    bool any = false;
+    for (std::size_t b = 0; b < v.toe_top_touching.size(); ++b) {
+      if (v.toe_top_touching[b] && v.contact_count[b] == 0) ++a.mismatches;
+      any = any || v.toe_top_touching[b];
+    }
+    if (any != v.toe_top_contact) ++a.mismatches;
+    a.toe_top_steps += v.toe_top_touching[1];
+    a.foot_toe_top_steps += v.toe_top_touching[0];
+  }
+  double finish(const accumulator_type& a, const rollout_outcome&) const {
+    return a.mismatches == 0 ? a.toe_top_steps - 1e6 * a.foot_toe_top_steps : -1e9;
+  }
+};
+}  // namespace
+
+TEST_CASE("the objective sees which body's toe top touches", "[rollout][objective][contact]") {
+  // A foot with a toe on a hinge; the toe's top point is its only toe_top point. Foot flat on the
+  // ground: the toe top is 3 cm up and never touches. Toe bent 90 degrees down (its top now faces
+  // forward) and the foot tipped forward onto it: the toe top is pressed into the ground.
+  model_builder<floating_root> b("foot_and_toe");
+  const Eigen::Matrix3d I = Eigen::Vector3d(0.01, 0.01, 0.01).asDiagonal();
+  b.add_body({.name = "foot", .mass = 1.0, .inertia = I});
+  b.add_body({.name = "toe", .parent = "foot", .joint_offset = {0.1, 0, -0.03}, .mass = 0.2,
+              .com = {0.03, 0, 0}, .inertia = 0.1 * I, .dofs = {{.name = "toe_y", .axis = {0, 1, 0}}}});
+  for (double x : {-0.1, 0.1}) b.add_contact_point({.name = "heel" + std::to_string(x > 0), .body = "foot", .position = {x, 0, -0.03}});
+  b.add_contact_point({.name = "toe_bottom", .body = "toe", .position = {0.06, 0, 0},
+                       .role = contact_point::kind::toe});
+  b.add_contact_point({.name = "toe_top", .body = "toe", .position = {0.06, 0, 0.03},
+                       .role = contact_point::kind::toe_top});
+  const floating_model m = b.build();
+  auto scr = make_rollout_scratch(m);
+  rollout_options opt;
+  opt.dt = dt;
+  opt.duration = 0.05;
+  opt.detect_falls = false;
+  opt.initial_state = make_state(m);
+  const Eigen::VectorXd zero = Eigen::VectorXd::Zero(1);
+  const torque_actuator ta;
+  const pose_hold passive(m, {.output = command_kind::joint_torque});
+
+  SECTION("flat foot: no toe-top contact") {
+    opt.initial_state.q[2] = 0.0299;  // soles 0.1 mm into the ground
+    const auto r = rollout(m, ta, passive, toe_top_probe{}, flat_terrain(), semi_implicit_euler(),
+                           zero, opt, scr);
+    CHECK(r.cost == 0.0);  // no mismatch, no toe-top step
+  }
+  SECTION("toe bent under: the toe body's flag, not the foot's") {
+    // Toe hinge at 90 degrees (toe pointing down, its top facing +x), then the whole foot pitched
+    // forward by 90 degrees: the toe's top face is now the lowest point.
+    const double half = std::numbers::pi / 4;
+    opt.initial_state.q.segment<4>(3) << std::cos(half), 0.0, std::sin(half), 0.0;  // pitch +90
+    opt.initial_state.q[7] = std::numbers::pi / 2;
+    auto ws = make_workspace(m);
+    forward_kinematics(m, ws, opt.initial_state.q);
+    double lowest = 1e9;
+    int lowest_point = -1;
+    for (int k = 0; k < static_cast<int>(m.contact_points.size()); ++k) {
+      const double z = point_position(m, ws, m.contact_points[k].body, m.contact_points[k].position).z();
+      if (z < lowest) lowest = z, lowest_point = k;
+    }
+    REQUIRE(m.contact_points[lowest_point].role == contact_point::kind::toe_top);
+    opt.initial_state.q[2] -= lowest + 0.001;  // toe top 1 mm into the ground
+    const auto r = rollout(m, ta, passive, toe_top_probe{}, flat_terrain(), semi_implicit_euler(),
+                           zero, opt, scr);
+    CHECK(r.cost > 0.0);  // toe-top steps on the toe body, none on the foot, no mismatch
+  }
 }

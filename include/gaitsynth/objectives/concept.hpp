@@ -56,7 +56,8 @@ struct step_view {
   std::span<const int> contact_count;             ///< per body: contact points touching
   std::span<const unsigned char> contact_active;  ///< per contact point
   std::span<const vec3> contact_force;            ///< per contact point, world, N
-  bool toe_top_contact = false;                   ///< the top of a toe touches (a stumble)
+  std::span<const std::uint8_t> toe_top_touching;  ///< per body: 1 if its toe-top point touches
+  bool toe_top_contact = false;                   ///< the top of some toe touches (a stumble)
   vec3 com = vec3::Zero();                        ///< world, m
   vec3 com_velocity = vec3::Zero();               ///< world, m/s
 

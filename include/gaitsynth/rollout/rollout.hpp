@@ -274,6 +274,7 @@ rollout_result rollout_impl(const model<Root>& m, const Actuator& act, C& ctrl,
   view.contact_count = scr.contacts.points_touching;
   view.contact_active = scr.contacts.active;
   view.contact_force = scr.contacts.force;
+  view.toe_top_touching = scr.contacts.toe_top_touching;  // per body (Wang 2009: the swing toe's)
   view.actuator_state_ptr = &act_state;
 
   // The system the integrator steps: ABA with the held torques and external wrenches.
