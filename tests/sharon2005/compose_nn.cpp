@@ -6,11 +6,14 @@
 #include <catch2/catch.hpp>
 
 #include <cmath>
+#include <numbers>
+#include <vector>
 #include <tuple>
 
 #include "gaitsynth/actuators/pd.hpp"
 #include "gaitsynth/actuators/torque.hpp"
 #include "gaitsynth/contact/flat_terrain.hpp"
+#include "gaitsynth/contact/slope_terrain.hpp"
 #include "gaitsynth/controllers/keyframes.hpp"
 #include "gaitsynth/controllers/nearest_neighbor.hpp"
 #include "gaitsynth/controllers/nearest_neighbor_synthesis.hpp"
@@ -224,4 +227,45 @@ TEST_CASE("mass-distance objective inside CMA-ES (nearest-neighbor controller, 7
   CHECK(r.value > 0.0);
   // The best of 34 samples is a real cost of that point, reproducible by a fresh evaluation.
   CHECK(prob.cost(r.x, 0.2) == r.value);
+}
+
+TEST_CASE("a problem with variants adds the variants' costs, on other terrain types",
+          "[sharon2005][synthesis][variants]") {
+  const planar_model m = sharon2005_human7();
+  const auto target = load_keyframes(
+      m, std::string(GAITSYNTH_SOURCE_DIR) + "/data/sharon2005/normal_walk.keyframes.json");
+  rollout_options ro;
+  ro.initial_state = target.initial_state();
+  const nearest_neighbor_controller<planar_root> c0(m, target, {});
+  const nn_problem flat{m, torque_actuator{}, c0, mass_distance<planar_root>(m, target),
+                        flat_terrain{}, semi_implicit_euler{}, ro};
+  // Variants: the same controller on a 5 degree slope, and on flat ground from a faster start.
+  const slope_terrain hill(5.0 * std::numbers::pi / 180.0);
+  rollout_options rh = ro;
+  rh.initial_state = target_start_states(m, target, hill, {0.0}).front();
+  using hill_problem = nn_problem<planar_root, torque_actuator, mass_distance<planar_root>,
+                                  slope_terrain, semi_implicit_euler>;
+  std::vector<hill_problem> variants{
+      hill_problem{m, torque_actuator{}, c0, mass_distance<planar_root>(m, target), hill,
+                   semi_implicit_euler{}, rh}};
+  const auto combined = make_problem_with_variants(flat, variants, 0.5);
+  const Eigen::VectorXd x = flat.initial_parameters();
+  const double c_flat = flat.cost(x, 0.3), c_hill = variants[0].cost(x, 0.3);
+  REQUIRE(std::isfinite(c_flat));
+  REQUIRE(std::isfinite(c_hill));
+  CHECK(c_hill != c_flat);  // the slope changes the motion
+  CHECK(combined.cost(x, 0.3) == c_flat + 0.5 * c_hill);
+  // Everything else is the main problem's: the 70 s check runs on flat ground.
+  CHECK(combined.evaluate(x, 0.3).cost == flat.evaluate(x, 0.3).cost);
+  CHECK(combined.initial_parameters() == x);
+
+  CHECK_THROWS_WITH(make_problem_with_variants(flat, variants, -1.0),
+                    Catch::Contains("variant_weight") && Catch::Contains("-1"));
+  nearest_neighbor_options o24;
+  o24.num_nodes = 24;
+  std::vector<hill_problem> wrong{hill_problem{m, torque_actuator{}, nearest_neighbor_controller<planar_root>(m, target, o24),
+                                               mass_distance<planar_root>(m, target), hill,
+                                               semi_implicit_euler{}, rh}};
+  CHECK_THROWS_WITH(make_problem_with_variants(flat, wrong),
+                    Catch::Contains("144") && Catch::Contains("72"));
 }

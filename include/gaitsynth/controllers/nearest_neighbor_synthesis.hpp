@@ -105,6 +105,50 @@ nn_problem(const model<Root>&, Actuator, nearest_neighbor_controller<Root>, Obje
            Integrator, rollout_options)
     -> nn_problem<Root, Actuator, Objective, Terrain, Integrator>;
 
+/// A problem whose cost also counts rollouts of the same controller in other situations: other
+/// terrains, bodies or start states that the controller cannot sense (section VII: "the addition of
+/// disturbances during the controller evaluation may encourage robustness"). It is the main
+/// problem (whose character, controller, starts and evaluate() it inherits: the 70 s check runs on
+/// the main problem) with the cost
+///
+///   C(x, T) = C_main(x, T) + variant_weight * sum_k C_k(x, T),
+///
+/// each variant being a problem of its own (a different Terrain type is fine). Only the main
+/// problem's controller is optimized; the variants' controllers must have the same parameter
+/// layout (same model DOFs and node count), checked on construction by
+/// make_problem_with_variants.
+template <class Main, class Variant>
+struct nn_problem_with_variants : Main {
+  std::vector<Variant> variants;
+  double variant_weight = 1.0;
+
+  /// The main problem (itself possibly a problem with variants: they nest).
+  const Main& main() const { return *this; }
+
+  double cost(const Eigen::VectorXd& x, double horizon) const {
+    double c = Main::cost(x, horizon);
+    for (const Variant& v : variants) c += variant_weight * v.cost(x, horizon);
+    return c;
+  }
+};
+
+/// Builds an nn_problem_with_variants; throws std::invalid_argument if a variant's controller has a
+/// different number of parameters or the weight is not finite and >= 0.
+template <class Main, class Variant>
+nn_problem_with_variants<Main, Variant> make_problem_with_variants(Main main,
+                                                                   std::vector<Variant> variants,
+                                                                   double variant_weight = 1.0) {
+  check_argument(std::isfinite(variant_weight) && variant_weight >= 0.0,
+                 "make_problem_with_variants: variant_weight must be finite and >= 0, got ",
+                 variant_weight);
+  for (std::size_t k = 0; k < variants.size(); ++k)
+    check_argument(variants[k].controller.num_parameters() == main.controller.num_parameters(),
+                   "make_problem_with_variants: variant ", k, "'s controller has ",
+                   variants[k].controller.num_parameters(), " parameters, the main one ",
+                   main.controller.num_parameters());
+  return {std::move(main), std::move(variants), variant_weight};
+}
+
 struct nn_synthesis_options {
   /// Episode horizons T_sim (s), in order. Empty: 0.2, 0.4, ..., 2.0 (section V.C).
   std::vector<double> horizons;
@@ -135,7 +179,7 @@ struct nn_synthesis_result {
 /// The default bootstrapping schedule: 0.2, 0.4, ..., 2.0 s.
 inline std::vector<double> default_episode_horizons() {
   std::vector<double> h;
-  for (int k = 1; k <= 10; ++k) h.push_back(0.2 * k);
+  for (int k = 1; k <= 10; ++k) h.push_back(k / 5.0);  // 0.2, 0.4, ..., 2 (exact decimals)
   return h;
 }
 

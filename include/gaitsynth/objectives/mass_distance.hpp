@@ -28,6 +28,8 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
+#include <utility>
 #include <span>
 #include <string_view>
 #include <vector>
@@ -38,6 +40,7 @@
 #include "gaitsynth/dynamics/workspace.hpp"
 #include "gaitsynth/error.hpp"
 #include "gaitsynth/objectives/concept.hpp"
+#include "gaitsynth/rollout/trajectory.hpp"
 
 namespace gaitsynth {
 
@@ -191,5 +194,50 @@ class mass_distance {
   options opt_;
   double fall_rate_ = 0.0;
 };
+
+/// Style error of a recorded motion (rollout/trajectory.hpp) over [t0, t1): the mean of delta
+/// (eq. 2, two points per link) against the target motion shifted in time by the phase phi in
+/// [0, period) that fits best (searched on a grid of phase_step s) and moved along x under the
+/// recorded COM at every frame. It compares the *shape* of the motion with the keyframed style,
+/// whatever the drift in speed and timing over a long run. Returns {mean delta (kg m^2), phi (s)}.
+template <root_joint Root>
+std::pair<double, double> phase_aligned_style_error(const model<Root>& m,
+                                                    const keyframe_motion<Root>& target,
+                                                    const trajectory& tr, double t0, double t1,
+                                                    double phase_step = 0.01) {
+  check_positive(phase_step, "phase_aligned_style_error: phase_step (s)");
+  const std::vector<mass_point> pts = link_end_points(m);
+  std::vector<const trajectory_frame*> frames;
+  for (const auto& f : tr.frames)
+    if (f.t >= t0 && f.t < t1) frames.push_back(&f);
+  check_argument(!frames.empty(), "phase_aligned_style_error: no recorded frame in [", t0, ", ",
+                 t1, ")");
+  for (const auto* f : frames)
+    check_argument(static_cast<int>(f->body_position.size()) == m.num_bodies() &&
+                       static_cast<int>(f->body_orientation.size()) == m.num_bodies(),
+                   "phase_aligned_style_error: frame at t = ", f->t,
+                   " has no body poses for model '", m.name, "'");
+  auto ws = make_workspace(m);
+  Eigen::VectorXd q(m.nq());
+  std::vector<mat3> R(m.num_bodies());
+  double best = std::numeric_limits<double>::infinity(), best_phi = 0.0;
+  const int n_phase = std::max(1, static_cast<int>(std::ceil(target.period() / phase_step)));
+  for (int k = 0; k < n_phase; ++k) {
+    const double phi = k * phase_step;
+    double sum = 0.0;
+    for (const auto* f : frames) {
+      target.pose(f->t + phi, q);
+      forward_kinematics(m, ws, q);
+      q[0] += f->com.x() - center_of_mass(m, ws).x();
+      forward_kinematics(m, ws, q);
+      for (int b = 0; b < m.num_bodies(); ++b) R[b] = f->body_orientation[b].toRotationMatrix();
+      sum += mass_distance_error(pts, R, f->body_position, ws.body_rotation, ws.body_position);
+      if (sum / static_cast<double>(frames.size()) >= best) break;  // cannot win any more
+    }
+    const double mean = sum / static_cast<double>(frames.size());
+    if (mean < best) best = mean, best_phi = phi;
+  }
+  return {best, best_phi};
+}
 
 }  // namespace gaitsynth
