@@ -25,6 +25,41 @@ inline svec base_acceleration(const model<Root>& m) {
   return make_svec(vec3::Zero(), -m.gravity);
 }
 
+/// Solves A x = b for a small symmetric positive definite A (the root's articulated inertia
+/// S0^T IA0 S0) by an LDL^T factorization with compile-time bounds: fully unrolled, it is several
+/// times cheaper than Eigen's general LLT for a 6x6 and as accurate (no pivoting is needed for
+/// SPD).
+template <int N>
+Eigen::Matrix<double, N, 1> solve_spd(const Eigen::Matrix<double, N, N>& A,
+                                      const Eigen::Matrix<double, N, 1>& b) {
+  double L[N][N] = {};
+  double d[N] = {}, dinv[N] = {};
+  for (int j = 0; j < N; ++j) {
+    double djj = A(j, j);
+    for (int k = 0; k < j; ++k) djj -= L[j][k] * L[j][k] * d[k];
+    d[j] = djj;
+    dinv[j] = 1.0 / djj;
+    for (int i = j + 1; i < N; ++i) {
+      double lij = A(i, j);
+      for (int k = 0; k < j; ++k) lij -= L[i][k] * L[j][k] * d[k];
+      L[i][j] = lij * dinv[j];
+    }
+  }
+  Eigen::Matrix<double, N, 1> x;
+  for (int i = 0; i < N; ++i) {  // L y = b
+    double yi = b[i];
+    for (int k = 0; k < i; ++k) yi -= L[i][k] * x[k];
+    x[i] = yi;
+  }
+  for (int i = 0; i < N; ++i) x[i] *= dinv[i];  // D z = y
+  for (int i = N - 1; i >= 0; --i) {            // L^T x = z
+    double xi = x[i];
+    for (int k = i + 1; k < N; ++k) xi -= L[k][i] * x[k];
+    x[i] = xi;
+  }
+  return x;
+}
+
 /// ABA passes 2 and 3 (kinematics must be current). Writes ws.ddq.
 template <root_joint Root>
 void aba_passes(const model<Root>& m, workspace<Root>& ws,
@@ -60,7 +95,7 @@ void aba_passes(const model<Root>& m, workspace<Root>& ws,
     const svec& S = s.S[n];
     const smat& IA = s.IA[n];
     const svec& c = s.C[n];
-    const svec U = s.Uacc[n];  // == IA * S
+    const svec U = s.Uacc[n];             // == IA * S
     const double Dinv = 1.0 / s.Dacc[n];  // == 1 / (S^T IA S)
     const double u = tau[nvr + n - 1] - sdot(S, s.pA[n]);
     s.U[n] = U;
@@ -93,7 +128,7 @@ void aba_passes(const model<Root>& m, workspace<Root>& ws,
     const Eigen::Matrix<double, nvr, nvr> D = S0.transpose() * IS;
     const vec6 f0 = to_vec6(s.pA[0] + op_times(s.IA[0], a_pre));
     const Eigen::Matrix<double, nvr, 1> rhs = tau.template head<nvr>() - S0.transpose() * f0;
-    const Eigen::Matrix<double, nvr, 1> ddq_r = D.llt().solve(rhs);
+    const Eigen::Matrix<double, nvr, 1> ddq_r = solve_spd<nvr>(D, rhs);
     ws.ddq.template head<nvr>() = ddq_r;
     const vec6 Sq = S0 * ddq_r;
     s.A[0] = a_pre;
@@ -106,6 +141,94 @@ void aba_passes(const model<Root>& m, workspace<Root>& ws,
     const double qdd = s.Dinv[n] * (s.u[n] - sdot(s.U[n], a));
     ws.ddq[nvr + n - 1] = qdd;
     s.A[n] = a + s.S[n] * qdd;
+  }
+}
+
+/// Planar fast path of ABA passes 1-3 (workspace.hpp, planar_scratch): the same recursion as
+/// aba_passes on 3-vectors and symmetric 3x3 inertias, with the same look-ahead assembly of the
+/// parent's U = IA S and D = S^T IA S in pass 2. Writes ws.ddq.
+inline void aba_passes_planar(const model<planar_root>& m, workspace<planar_root>& ws,
+                              const Eigen::Ref<const Eigen::VectorXd>& tau) {
+  auto& s = ws.scratch;
+  auto& P = s.planar;
+  constexpr int nvr = planar_root::nv;
+  const int nn = s.nj + 1;
+  // Pass 1: IA = I, pA = v x* I v - f_ext (f_ext shifted from the body origin to the reference:
+  // n_y + (rel x f)_y), and the node's own U = I S, D = S^T I S.
+  for (int n = 0; n < nn; ++n) {
+    const int b = s.node_body[n];
+    if (b >= 0) {
+      const psym& I = P.body_I[b];
+      P.IA[n] = I;
+      const vec6& fe = ws.f_ext[b];
+      const vec3& r = s.body_rel[b];
+      P.pA[n] = P.body_bias[b] - pvec(fe[1] + r.z() * fe[3] - r.x() * fe[5], fe[3], fe[5]);
+      const pvec U = sym_mul(I, P.S[n]);
+      P.U[n] = U;
+      P.D[n] = P.S[n].dot(U);
+    } else {
+      P.IA[n] = psym{};
+      P.pA[n].setZero();
+      P.U[n].setZero();
+      P.D[n] = 0.0;
+    }
+  }
+  // Pass 2 (backward): Ia = IA - U D^-1 U^T, pa = pA + Ia c + U D^-1 u into the parent; the
+  // parent's U and D get Ia S_p = X - U D^-1 Y and S_p^T Ia S_p = S_p^T X - D^-1 Y^2
+  // (X = IA S_p, Y = U^T S_p) now, so only a multiply-add separates a division from the next.
+  for (int n = nn - 1; n >= 1; --n) {
+    const pvec& S = P.S[n];
+    const psym& IA = P.IA[n];
+    const pvec U = P.U[n];
+    const double Dinv = 1.0 / P.D[n];
+    const double u = tau[nvr + n - 1] - S.dot(P.pA[n]);
+    P.Dinv[n] = Dinv;
+    P.u[n] = u;
+    const int p = s.node_parent[n];
+    const pvec DU = Dinv * U;
+    psym Ia;
+    Ia.a = IA.a - DU[0] * U[0];
+    Ia.b = IA.b - DU[0] * U[1];
+    Ia.c = IA.c - DU[0] * U[2];
+    Ia.d = IA.d - DU[1] * U[1];
+    Ia.e = IA.e - DU[1] * U[2];
+    Ia.f = IA.f - DU[2] * U[2];
+    P.pA[p] += P.pA[n] + sym_mul(Ia, P.C[n]) + DU * u;
+    if (p > 0) {
+      const pvec& Sp = P.S[p];
+      const pvec X = sym_mul(IA, Sp);
+      const double Y = U.dot(Sp);
+      P.U[p] += X - DU * Y;
+      P.D[p] += Sp.dot(X) - Dinv * (Y * Y);
+    }
+    P.IA[p] += Ia;
+  }
+  // Root: S0 maps (x, z, pitch) to the planar components (1, 2, 0), so S0^T IA0 S0 is IA0 with
+  // rows and columns permuted; solve it (3x3, symmetric positive definite) by LDL^T.
+  const pvec a_pre = pvec(0.0, -m.gravity.x(), -m.gravity.z()) + P.C[0];
+  const psym& I0 = P.IA[0];
+  const pvec f0 = P.pA[0] + sym_mul(I0, a_pre);
+  const double D00 = I0.d, D10 = I0.e, D11 = I0.f, D20 = I0.b, D21 = I0.c, D22 = I0.a;
+  const double r0 = tau[0] - f0[1], r1 = tau[1] - f0[2], r2 = tau[2] - f0[0];
+  const double d0 = D00;
+  const double l10 = D10 / d0, l20 = D20 / d0;
+  const double d1 = D11 - l10 * D10;
+  const double l21 = (D21 - l20 * D10) / d1;
+  const double d2 = D22 - l20 * D20 - l21 * l21 * d1;
+  const double y1 = r1 - l10 * r0, y2 = r2 - l20 * r0 - l21 * y1;
+  const double x2 = y2 / d2;
+  const double x1 = y1 / d1 - l21 * x2;
+  const double x0 = r0 / d0 - l10 * x1 - l20 * x2;
+  ws.ddq[0] = x0;
+  ws.ddq[1] = x1;
+  ws.ddq[2] = x2;
+  P.A[0] = a_pre + pvec(x2, x0, x1);
+  // Pass 3 (forward).
+  for (int n = 1; n < nn; ++n) {
+    const pvec a = P.A[s.node_parent[n]] + P.C[n];
+    const double qdd = P.Dinv[n] * (P.u[n] - P.U[n].dot(a));
+    ws.ddq[nvr + n - 1] = qdd;
+    P.A[n] = a + P.S[n] * qdd;
   }
 }
 
@@ -125,7 +248,13 @@ const Eigen::VectorXd& aba(const model<Root>& m, workspace<Root>& ws,
   detail::check_q(m, q);
   detail::check_v(m, v, "v (generalized velocities)");
   detail::check_v(m, tau, "tau (generalized forces)");
-  detail::ensure_kinematics(m, ws, q, v);
+  detail::ensure_kinematics_fast(m, ws, q, v);
+  if constexpr (std::is_same_v<Root, planar_root>) {
+    if (ws.scratch.planar.enabled) {
+      detail::aba_passes_planar(m, ws, tau);
+      return ws.ddq;
+    }
+  }
   detail::aba_passes(m, ws, tau);
   return ws.ddq;
 }

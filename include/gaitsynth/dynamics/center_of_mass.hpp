@@ -9,6 +9,16 @@ namespace gaitsynth {
 template <root_joint Root>
 vec3 center_of_mass(const model<Root>& m, const workspace<Root>& ws) {
   const auto& s = ws.scratch;
+  if (detail::planar_path(ws) && s.planar.level >= 1) {
+    const auto& P = s.planar;
+    vec3 c = vec3::Zero();
+    double mass = 0.0;
+    for (int b = 0; b < m.num_bodies(); ++b) {
+      c += P.body_mass[b] * P.body_com[b];
+      mass += P.body_mass[b];
+    }
+    return s.ref + c / mass;
+  }
   vec3 c = vec3::Zero();
   double mass = 0.0;
   for (int b = 0; b < m.num_bodies(); ++b) {
@@ -22,6 +32,20 @@ vec3 center_of_mass(const model<Root>& m, const workspace<Root>& ws) {
 template <root_joint Root>
 vec3 com_velocity(const model<Root>& m, const workspace<Root>& ws) {
   const auto& s = ws.scratch;
+  if (detail::planar_path(ws) && s.planar.level >= 2) {
+    // Velocity of the COM c: v + omega x c = (v_x + omega_y c_z, 0, v_z - omega_y c_x).
+    const auto& P = s.planar;
+    double px = 0.0, pz = 0.0, mass = 0.0;
+    for (int b = 0; b < m.num_bodies(); ++b) {
+      const detail::pvec& V = P.V[s.body_node[b]];
+      const vec3& c = P.body_com[b];
+      const double mb = P.body_mass[b];
+      px += mb * (V[1] + V[0] * c.z());
+      pz += mb * (V[2] - V[0] * c.x());
+      mass += mb;
+    }
+    return vec3(px / mass, 0.0, pz / mass);
+  }
   vec3 p = vec3::Zero();
   double mass = 0.0;
   for (int b = 0; b < m.num_bodies(); ++b) {

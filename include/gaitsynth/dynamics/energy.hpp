@@ -9,9 +9,20 @@ namespace gaitsynth {
 template <root_joint Root>
 double kinetic_energy(const model<Root>& m, const workspace<Root>& ws) {
   const auto& s = ws.scratch;
+  if (detail::planar_path(ws) && s.level < 2) {
+    // The planar fast path leaves the 6D scratch stale: 0.5 v^T I v of its planar inertias.
+    const auto& P = s.planar;
+    double e = 0.0;
+    for (int b = 0; b < m.num_bodies(); ++b) {
+      const detail::pvec& V = P.V[s.body_node[b]];
+      e += 0.5 * V.dot(detail::sym_mul(P.body_I[b], V));
+    }
+    return e;
+  }
   double e = 0.0;
   for (int b = 0; b < m.num_bodies(); ++b)
-    e += 0.5 * detail::sdot(s.V[s.body_node[b]], detail::momentum_of(s.body_inertia[b], s.V[s.body_node[b]]));
+    e += 0.5 * detail::sdot(s.V[s.body_node[b]],
+                            detail::momentum_of(s.body_inertia[b], s.V[s.body_node[b]]));
   return e;
 }
 
@@ -19,6 +30,13 @@ double kinetic_energy(const model<Root>& m, const workspace<Root>& ws) {
 template <root_joint Root>
 double potential_energy(const model<Root>& m, const workspace<Root>& ws) {
   const auto& s = ws.scratch;
+  if (detail::planar_path(ws) && s.level < 1) {
+    const auto& P = s.planar;
+    double e = 0.0;
+    for (int b = 0; b < m.num_bodies(); ++b)
+      e -= P.body_mass[b] * m.gravity.dot(s.ref + P.body_com[b]);
+    return e;
+  }
   double e = 0.0;
   for (int b = 0; b < m.num_bodies(); ++b) {
     const spatial::rigid_inertia& I = s.body_inertia[b];

@@ -7,7 +7,9 @@
 /// the same q (and v) again skips the recomputation, so the usual step
 ///   forward_kinematics(m, ws, q, v); apply_contact_forces(...); aba(m, ws, q, v, tau);
 /// pays for the kinematics once. The cache compares values, not addresses, so it is always safe.
+#include <algorithm>
 #include <cmath>
+#include <type_traits>
 
 #include "gaitsynth/dynamics/workspace.hpp"
 #include "gaitsynth/spatial/sincos.hpp"
@@ -144,6 +146,93 @@ void update_velocities(const model<Root>& m, workspace<Root>& ws, const Vv& v) {
   }
 }
 
+/// True when `ws` runs the planar fast path (workspace.hpp, planar_scratch).
+template <root_joint Root>
+constexpr bool planar_path(const workspace<Root>& ws) {
+  if constexpr (std::is_same_v<Root, planar_root>)
+    return ws.scratch.planar.enabled;
+  else
+    return false;
+}
+
+/// Planar fast path of update_poses: poses, joint axes and planar inertias about the reference
+/// point (the root origin), and the public pose outputs. Every body frame is Ry(pitch_b), pitch_b
+/// composed along the chain as (cos, sin) pairs.
+template <class Q>
+void update_poses_planar(const model<planar_root>& m, workspace<planar_root>& ws, const Q& q) {
+  auto& s = ws.scratch;
+  auto& P = s.planar;
+  // q = [x, z, pitch, joints...]: the pitch and the joint angles are contiguous, one batch.
+  spatial::sincos_batch(q.data() + 2, P.sin_q.data(), P.cos_q.data(), s.nj + 1);
+  const double c0 = P.cos_q[0], s0 = P.sin_q[0];
+  const vec3 p0 = m.bodies[0].joint_offset + vec3(q[0], 0.0, q[1]);
+  s.ref = p0;
+  const int nb = m.num_bodies();
+  for (int b = 0; b < nb; ++b) {
+    const body& bd = m.bodies[b];
+    double c = c0, sn = s0;
+    vec3 rel = vec3::Zero();
+    if (b > 0) {
+      const int p = bd.parent;
+      const double cp = P.cos_b[p], sp = P.sin_b[p];
+      const vec3& o = bd.joint_offset;
+      rel = s.body_rel[p] + vec3(cp * o.x() + sp * o.z(), o.y(), cp * o.z() - sp * o.x());
+      c = cp;
+      sn = sp;
+      for (int k = 0; k < bd.num_dofs; ++k) {
+        const int j = bd.first_dof + k;
+        const double sg = s.dof_axis_sign[j];
+        // Axis sg e_y through the body origin, about the reference: [sg e_y; rel x sg e_y].
+        P.S[j + 1] = pvec(sg, -sg * rel.z(), sg * rel.x());
+        const double cq = P.cos_q[j + 1], sq = sg * P.sin_q[j + 1];
+        const double cn = c * cq - sn * sq;
+        sn = sn * cq + c * sq;
+        c = cn;
+      }
+    }
+    P.cos_b[b] = c;
+    P.sin_b[b] = sn;
+    mat3& R = ws.body_rotation[b];
+    R << c, 0.0, sn, 0.0, 1.0, 0.0, -sn, 0.0, c;
+    s.body_rel[b] = rel;
+    ws.body_position[b] = p0 + rel;
+    const vec3& cb = bd.com;
+    const vec3 cw = rel + vec3(c * cb.x() + sn * cb.z(), cb.y(), c * cb.z() - sn * cb.x());
+    P.body_com[b] = cw;
+    // Rows/columns (1, 3, 5) of eq. 2.63 about the reference; Ry leaves I_yy unchanged.
+    const double mb = bd.mass, mx = mb * cw.x(), mz = mb * cw.z();
+    P.body_I[b] = {bd.inertia(1, 1) + mx * cw.x() + mz * cw.z(), mz, -mx, mb, 0.0, mb};
+  }
+}
+
+/// Planar fast path of update_velocities (poses must be current).
+template <class Vv>
+void update_velocities_planar(const model<planar_root>& m, workspace<planar_root>& ws,
+                              const Vv& v) {
+  auto& s = ws.scratch;
+  auto& P = s.planar;
+  constexpr int nvr = planar_root::nv;
+  // v_root = [xdot, zdot, pitchdot]; about the root origin: [omega_y; v_x; v_z].
+  const pvec V0(v[2], v[0], v[1]);
+  P.V[0] = V0;
+  P.C[0] = pvec(0.0, -V0[0] * V0[2], V0[0] * V0[1]);  // [0; -omega x v_ref], as the 6D root
+  const int nn = s.nj + 1;
+  for (int n = 1; n < nn; ++n) {
+    const pvec vj = P.S[n] * v[nvr + n - 1];
+    const pvec& vp = P.V[s.node_parent[n]];
+    P.V[n] = vp + vj;
+    P.C[n] = planar_cross_motion(vp, vj);  // eq. 7.35
+  }
+  const int nb = m.num_bodies();
+  for (int b = 0; b < nb; ++b) {
+    const pvec& Vb = P.V[s.body_node[b]];
+    const vec3& r = s.body_rel[b];
+    ws.body_angular_velocity[b] = vec3(0.0, Vb[0], 0.0);
+    ws.body_linear_velocity[b] = vec3(Vb[1] + Vb[0] * r.z(), 0.0, Vb[2] - Vb[0] * r.x());
+    P.body_bias[b] = planar_cross_force(Vb, sym_mul(P.body_I[b], Vb));  // eq. 7.38
+  }
+}
+
 template <root_joint Root, class Q>
 void check_q(const model<Root>& m, const Q& q) {
   check_size(q.size(), m.nq(), "q (generalized positions)");
@@ -153,27 +242,48 @@ void check_v(const model<Root>& m, const Vv& v, const char* what) {
   check_size(v.size(), m.nv(), what);
 }
 
-/// Makes poses current for q (recomputing only when q or the model differ from the cached ones).
+/// True when q_cache holds q for this model in either representation (6D or planar).
+template <root_joint Root>
+bool same_q(const model<Root>& m, const workspace<Root>& ws,
+            const Eigen::Ref<const Eigen::VectorXd>& q) {
+  const auto& s = ws.scratch;
+  return s.model_id == &m && (s.level >= 1 || s.planar.level >= 1) && q == s.q_cache;
+}
+/// True when v_cache holds v for the cached q in either representation (after same_q).
+template <root_joint Root>
+bool same_v(const workspace<Root>& ws, const Eigen::Ref<const Eigen::VectorXd>& v) {
+  const auto& s = ws.scratch;
+  return (s.level >= 2 || s.planar.level >= 2) && v == s.v_cache;
+}
+
+/// Makes the 6D scratch's poses current for q (recomputing only when q or the model differ from
+/// the cached ones). The algorithms that need the 6D scratch (rnea, crba, Jacobians) use this.
 template <root_joint Root>
 void ensure_poses(const model<Root>& m, workspace<Root>& ws,
                   const Eigen::Ref<const Eigen::VectorXd>& q) {
   auto& s = ws.scratch;
-  if (s.level >= 1 && s.model_id == &m && q == s.q_cache) return;
+  const bool sq = same_q(m, ws, q);
+  if (sq && s.level >= 1) return;
+  if (!sq) s.planar.level = 0;
   update_poses(m, ws, q);
   s.q_cache = q;
   s.model_id = &m;
   s.level = 1;
 }
 
-/// Makes poses and velocities current for (q, v).
+/// Makes the 6D scratch's poses and velocities current for (q, v).
 template <root_joint Root>
 void ensure_kinematics(const model<Root>& m, workspace<Root>& ws,
                        const Eigen::Ref<const Eigen::VectorXd>& q,
                        const Eigen::Ref<const Eigen::VectorXd>& v) {
   auto& s = ws.scratch;
-  if (s.level >= 1 && s.model_id == &m && q == s.q_cache) {
-    if (s.level >= 2 && v == s.v_cache) return;
-  } else {
+  const bool sq = same_q(m, ws, q);
+  if (sq && s.level >= 2 && v == s.v_cache) return;
+  if (!sq)
+    s.planar.level = 0;
+  else if (!same_v(ws, v))
+    s.planar.level = std::min(s.planar.level, 1);
+  if (!(sq && s.level >= 1)) {
     update_poses(m, ws, q);
     s.q_cache = q;
     s.model_id = &m;
@@ -181,6 +291,56 @@ void ensure_kinematics(const model<Root>& m, workspace<Root>& ws,
   update_velocities(m, ws, v);
   s.v_cache = v;
   s.level = 2;
+}
+
+/// Makes the public poses current for q, through the planar fast path when the model has one
+/// (forward_kinematics, aba and everything the rollout calls per step use this).
+template <root_joint Root>
+void ensure_poses_fast(const model<Root>& m, workspace<Root>& ws,
+                       const Eigen::Ref<const Eigen::VectorXd>& q) {
+  if constexpr (std::is_same_v<Root, planar_root>) {
+    auto& s = ws.scratch;
+    if (s.planar.enabled) {
+      if (same_q(m, ws, q)) return;  // the public poses are current in either representation
+      s.level = 0;
+      update_poses_planar(m, ws, q);
+      s.q_cache = q;
+      s.model_id = &m;
+      s.planar.level = 1;
+      return;
+    }
+  }
+  ensure_poses(m, ws, q);
+}
+
+/// Makes the public poses and velocities current for (q, v), with the planar scratch when the
+/// model has the planar fast path (what aba needs).
+template <root_joint Root>
+void ensure_kinematics_fast(const model<Root>& m, workspace<Root>& ws,
+                            const Eigen::Ref<const Eigen::VectorXd>& q,
+                            const Eigen::Ref<const Eigen::VectorXd>& v) {
+  if constexpr (std::is_same_v<Root, planar_root>) {
+    auto& s = ws.scratch;
+    auto& P = s.planar;
+    if (P.enabled) {
+      const bool sq = same_q(m, ws, q);
+      if (sq && P.level >= 2 && v == s.v_cache) return;
+      if (!sq)
+        s.level = 0;
+      else if (!same_v(ws, v))
+        s.level = std::min(s.level, 1);
+      if (!(sq && P.level >= 1)) {
+        update_poses_planar(m, ws, q);
+        s.q_cache = q;
+        s.model_id = &m;
+      }
+      update_velocities_planar(m, ws, v);
+      s.v_cache = v;
+      P.level = 2;
+      return;
+    }
+  }
+  ensure_kinematics(m, ws, q, v);
 }
 
 }  // namespace detail
@@ -192,7 +352,7 @@ void forward_kinematics(const model<Root>& m, workspace<Root>& ws,
                         const Eigen::Ref<const Eigen::VectorXd>& q) {
   detail::check_workspace(m, ws);
   detail::check_q(m, q);
-  detail::ensure_poses(m, ws, q);
+  detail::ensure_poses_fast(m, ws, q);
 }
 
 /// Body poses and velocities (also ws.body_angular_velocity, ws.body_linear_velocity) for (q, v).
@@ -204,7 +364,7 @@ void forward_kinematics(const model<Root>& m, workspace<Root>& ws,
   detail::check_workspace(m, ws);
   detail::check_q(m, q);
   detail::check_v(m, v, "v (generalized velocities)");
-  detail::ensure_kinematics(m, ws, q, v);
+  detail::ensure_kinematics_fast(m, ws, q, v);
 }
 
 /// World position of the point p_body (body frame) of `body` (after forward_kinematics).

@@ -4,11 +4,11 @@
 /// make_workspace(model); no algorithm allocates afterwards.
 ///
 /// Internally every algorithm works in *world axes about a moving reference point*: the root body's
-/// origin at the current configuration (docs/dynamics.md, "Spatial frames"). Using world axes removes
-/// the per-body 6x6 coordinate transforms of the body-frame ABA (Featherstone 2008, sec. 7.3 vs. the
-/// world-convention variant used by Pinocchio 3), and putting the origin at the root keeps lever arms
-/// short however far the character walks. The public fields below are converted to plain world
-/// quantities.
+/// origin at the current configuration (docs/dynamics.md, "Spatial frames"). Using world axes
+/// removes the per-body 6x6 coordinate transforms of the body-frame ABA (Featherstone 2008,
+/// sec. 7.3 vs. the world-convention variant used by Pinocchio 3), and putting the origin at the
+/// root keeps lever arms short however far the character walks. The public fields below are
+/// converted to plain world quantities.
 ///
 /// A body with k revolute DOFs is treated as a chain of k DOF "nodes" at the body origin, of which
 /// only the last carries the body's inertia (Featherstone sec. 4.4: a multi-DOF joint as a chain of
@@ -19,6 +19,7 @@
 #include <array>
 #include <cmath>
 #include <limits>
+#include <type_traits>
 #include <vector>
 
 #include "gaitsynth/error.hpp"
@@ -39,10 +40,18 @@ using svec = Eigen::Matrix<double, 8, 1>;
 /// column operation.)
 using smat = std::array<svec, 6>;
 
-inline auto ang(svec& x) { return x.template head<3>(); }
-inline auto ang(const svec& x) { return x.template head<3>(); }
-inline auto lin(svec& x) { return x.template segment<3>(3); }
-inline auto lin(const svec& x) { return x.template segment<3>(3); }
+inline auto ang(svec& x) {
+  return x.template head<3>();
+}
+inline auto ang(const svec& x) {
+  return x.template head<3>();
+}
+inline auto lin(svec& x) {
+  return x.template segment<3>(3);
+}
+inline auto lin(const svec& x) {
+  return x.template segment<3>(3);
+}
 inline svec make_svec(const vec3& a, const vec3& l) {
   svec x;
   x[0] = a[0];
@@ -55,7 +64,9 @@ inline svec make_svec(const vec3& a, const vec3& l) {
   x[7] = 0.0;
   return x;
 }
-inline vec6 to_vec6(const svec& x) { return x.template head<6>(); }
+inline vec6 to_vec6(const svec& x) {
+  return x.template head<6>();
+}
 
 /// a . b over the six spatial components (written out: a pairwise sum vectorizes well and avoids
 /// GCC 12's false -Wmaybe-uninitialized inside Eigen's AVX-512 horizontal reduction).
@@ -115,6 +126,58 @@ inline mat6 to_mat6(const smat& A) {
   return M;
 }
 
+/// Planar fast path (models with a planar_root whose joint axes are all +-y): every motion is in
+/// the world x-z plane, so spatial vectors reduce to 3-vectors [omega_y; v_x; v_z] (motion) and
+/// [n_y; f_x; f_z] (force), and spatial inertias to 3x3 matrices: the rows and columns 1, 3, 5 of
+/// the 6D quantities about the same reference point (Featherstone 2008, sec. 2.16, planar
+/// vectors). The out-of-plane components never feed back: for a planar v, the planar part of
+/// v x* f depends only on the planar part of f, and the joint axes only see planar parts; so the
+/// planar articulated-body algorithm gives the 6D one's ddq up to rounding (tests/dynamics/
+/// planar.cpp checks both against each other).
+using pvec = Eigen::Vector3d;
+/// Symmetric planar operator [a b c; b d e; c e f] (inertias), as scalars: the planar passes are
+/// latency bound, and plain scalars keep every value in registers or in simple store-load pairs.
+struct psym {
+  double a = 0.0, b = 0.0, c = 0.0, d = 0.0, e = 0.0, f = 0.0;
+  psym& operator+=(const psym& o) {
+    a += o.a;
+    b += o.b;
+    c += o.c;
+    d += o.d;
+    e += o.e;
+    f += o.f;
+    return *this;
+  }
+};
+inline pvec sym_mul(const psym& I, const pvec& x) {
+  return pvec(I.a * x[0] + I.b * x[1] + I.c * x[2], I.b * x[0] + I.d * x[1] + I.e * x[2],
+              I.c * x[0] + I.e * x[1] + I.f * x[2]);
+}
+
+struct planar_scratch {
+  bool enabled = false;  ///< the model qualifies (set once by make_workspace)
+  int level = 0;         ///< 0: nothing valid, 1: poses for q_cache, 2: and velocities for v_cache
+  std::vector<double> cos_q, sin_q;  ///< per DOF of q after x, z: root pitch, then the joints
+  std::vector<double> cos_b, sin_b;  ///< per body: its world pitch, R = Ry(pitch)
+  std::vector<vec3> body_com;        ///< per body: COM relative to the reference point, world
+  std::vector<double> body_mass;     ///< per body
+  std::vector<psym> body_I;          ///< per body: planar inertia about the reference point
+  std::vector<pvec> body_bias;       ///< per body: v x* I v
+  std::vector<pvec> S, V, C;         ///< per node (S[0] unused): axis, velocity, Sdot qdot
+  std::vector<psym> IA;              ///< per node: articulated inertia
+  std::vector<pvec> pA, U, A;        ///< per node: bias force, IA S (assembled ahead), accel.
+  std::vector<double> D, Dinv, u;    ///< per node: S^T IA S (assembled ahead), its inverse, u
+};
+
+/// v x m for planar motion vectors (the planar rows of eq. 2.31).
+inline pvec planar_cross_motion(const pvec& v, const pvec& m) {
+  return pvec(0.0, v[0] * m[2] - v[2] * m[0], v[1] * m[0] - v[0] * m[1]);
+}
+/// v x* f for a planar motion v and planar force f (the planar rows of eq. 2.32).
+inline pvec planar_cross_force(const pvec& v, const pvec& f) {
+  return pvec(v[2] * f[1] - v[1] * f[2], v[0] * f[2], -v[0] * f[1]);
+}
+
 /// Everything the algorithms keep between passes. Internal: names and layout may change.
 template <root_joint Root>
 struct dynamics_scratch {
@@ -122,41 +185,46 @@ struct dynamics_scratch {
   using root_subspace = Eigen::Matrix<double, 6, (nvr > 0 ? nvr : 1)>;
 
   // ---- constants derived from the model at make_workspace --------------------------------------
-  const void* model_id = nullptr;   ///< the model the cached kinematics belong to
-  int nb = 0, nj = 0;               ///< bodies, joint DOFs
-  std::vector<int> node_parent;     ///< per node (nj + 1): parent node, -1 for node 0
-  std::vector<int> node_body;       ///< per node: body whose inertia the node carries, -1 if none
-  std::vector<int> body_node;       ///< per body: node its inertia is attached to (its last DOF)
+  const void* model_id = nullptr;  ///< the model the cached kinematics belong to
+  int nb = 0, nj = 0;              ///< bodies, joint DOFs
+  std::vector<int> node_parent;    ///< per node (nj + 1): parent node, -1 for node 0
+  std::vector<int> node_body;      ///< per node: body whose inertia the node carries, -1 if none
+  std::vector<int> body_node;      ///< per body: node its inertia is attached to (its last DOF)
   /// per joint DOF: 0, 1, 2 if the axis is +-x, +-y, +-z of the body frame (a rotation then mixes
   /// two columns only), 3 for a general axis; dof_axis_sign is the sign of a coordinate axis.
   std::vector<int> dof_axis_kind;
   std::vector<double> dof_axis_sign;
 
   // ---- kinematics (forward_kinematics) ----------------------------------------------------------
-  vec3 ref = vec3::Zero();          ///< reference point (root body origin), world
-  std::vector<vec3> body_rel;       ///< body origin relative to ref, world axes
-  std::vector<double> sin_q, cos_q; ///< per joint DOF: sin and cos of its angle
+  vec3 ref = vec3::Zero();                           ///< reference point (root body origin), world
+  std::vector<vec3> body_rel;                        ///< body origin relative to ref, world axes
+  std::vector<double> sin_q, cos_q;                  ///< per joint DOF: sin and cos of its angle
   std::vector<spatial::rigid_inertia> body_inertia;  ///< per body, world axes, about ref
-  std::vector<smat> body_I;         ///< per body: 6x6 spatial inertia (world axes, about ref)
-  std::vector<svec> body_bias;      ///< per body: v x* I v (velocity-product force)
-  std::vector<svec> S;              ///< per node (index 0 unused): joint motion axis, about ref
+  std::vector<smat> body_I;     ///< per body: 6x6 spatial inertia (world axes, about ref)
+  std::vector<svec> body_bias;  ///< per body: v x* I v (velocity-product force)
+  std::vector<svec> S;          ///< per node (index 0 unused): joint motion axis, about ref
   root_subspace S0 = root_subspace::Zero();  ///< root joint motion subspace (6 x Root::nv)
-  std::vector<svec> V;              ///< per node: spatial velocity
-  std::vector<svec> C;              ///< per node: velocity-product acceleration (Sdot qdot)
+  std::vector<svec> V;                       ///< per node: spatial velocity
+  std::vector<svec> C;  ///< per node: velocity-product acceleration (Sdot qdot)
 
   // ---- articulated-body / recursive Newton-Euler passes -----------------------------------------
-  std::vector<smat> IA;     ///< per node: articulated inertia (ABA) / composite inertia (CRBA)
-  std::vector<svec> pA;     ///< per node: bias force (ABA) / body force (RNEA)
-  std::vector<svec> U;      ///< per node: IA * S
-  std::vector<svec> Uacc;   ///< per node: IA S assembled ahead from the children (ABA look-ahead)
-  std::vector<double> Dacc; ///< per node: S^T IA S assembled ahead from the children
-  std::vector<double> Dinv; ///< per node: 1 / (S^T IA S)
-  std::vector<double> u;    ///< per node: tau - S^T pA
-  std::vector<svec> A;      ///< per node: spatial acceleration (gravity included as base accel.)
+  std::vector<smat> IA;      ///< per node: articulated inertia (ABA) / composite inertia (CRBA)
+  std::vector<svec> pA;      ///< per node: bias force (ABA) / body force (RNEA)
+  std::vector<svec> U;       ///< per node: IA * S
+  std::vector<svec> Uacc;    ///< per node: IA S assembled ahead from the children (ABA look-ahead)
+  std::vector<double> Dacc;  ///< per node: S^T IA S assembled ahead from the children
+  std::vector<double> Dinv;  ///< per node: 1 / (S^T IA S)
+  std::vector<double> u;     ///< per node: tau - S^T pA
+  std::vector<svec> A;       ///< per node: spatial acceleration (gravity included as base accel.)
 
   // ---- cache of the configuration the kinematics were computed for ------------------------------
   Eigen::VectorXd q_cache, v_cache;
-  int level = 0;  ///< 0: nothing valid, 1: poses for q_cache, 2: poses and velocities
+  /// Validity of the 6D scratch above: 0: nothing valid, 1: poses for q_cache, 2: poses and
+  /// velocities. (planar.level says the same of the planar scratch; the public outputs of the
+  /// workspace are current when either is.)
+  int level = 0;
+
+  planar_scratch planar;  ///< planar fast path (empty unless planar.enabled)
 };
 
 }  // namespace detail
@@ -173,10 +241,10 @@ struct workspace {
   /// Read by aba (and rnea_with_external); zero it with clear_external_wrenches.
   std::vector<vec6> f_ext;
 
-  Eigen::VectorXd ddq;  ///< aba output, nv
-  Eigen::VectorXd tau;  ///< rnea output, nv
-  Eigen::VectorXd bias; ///< nonlinear_effects output (C v + g), nv
-  Eigen::MatrixXd M;    ///< crba output, nv x nv
+  Eigen::VectorXd ddq;   ///< aba output, nv
+  Eigen::VectorXd tau;   ///< rnea output, nv
+  Eigen::VectorXd bias;  ///< nonlinear_effects output (C v + g), nv
+  Eigen::MatrixXd M;     ///< crba output, nv x nv
 
   detail::dynamics_scratch<Root> scratch;  ///< internal
 };
@@ -248,6 +316,28 @@ workspace<Root> make_workspace(const model<Root>& m) {
   s.q_cache = Eigen::VectorXd::Constant(m.nq(), std::numeric_limits<double>::quiet_NaN());
   s.v_cache = Eigen::VectorXd::Constant(nv, std::numeric_limits<double>::quiet_NaN());
   s.level = 0;
+  if constexpr (std::is_same_v<Root, planar_root>) {
+    bool planar = true;
+    for (int j = 0; j < nj; ++j) planar = planar && s.dof_axis_kind[j] == 1;
+    auto& P = s.planar;
+    P.enabled = planar;
+    if (planar) {
+      P.cos_q.assign(nj + 1, 1.0);
+      P.sin_q.assign(nj + 1, 0.0);
+      P.cos_b.assign(nb, 1.0);
+      P.sin_b.assign(nb, 0.0);
+      P.body_com.assign(nb, vec3::Zero());
+      P.body_mass.assign(nb, 0.0);
+      for (int b = 0; b < nb; ++b) P.body_mass[b] = m.bodies[b].mass;
+      P.body_I.assign(nb, detail::psym{});
+      P.body_bias.assign(nb, detail::pvec::Zero());
+      for (auto* x : {&P.S, &P.V, &P.C, &P.pA, &P.U, &P.A}) x->assign(nn, detail::pvec::Zero());
+      P.IA.assign(nn, detail::psym{});
+      P.D.assign(nn, 0.0);
+      P.Dinv.assign(nn, 0.0);
+      P.u.assign(nn, 0.0);
+    }
+  }
   return ws;
 }
 
@@ -275,11 +365,21 @@ void add_body_wrench(workspace<Root>& ws, int body, const vec6& wrench) {
   ws.f_ext[body] += wrench;
 }
 
+/// Turns the planar fast path off for this workspace, so every algorithm runs the general 6D code
+/// (tests compare the two; the results agree to rounding). A no-op for other roots.
+template <root_joint Root>
+void disable_planar_path(workspace<Root>& ws) {
+  ws.scratch.planar.enabled = false;
+  ws.scratch.planar.level = 0;
+  ws.scratch.level = 0;
+}
+
 /// Forgets the cached kinematics, so the next algorithm recomputes them (benchmarks; never needed
 /// for correctness).
 template <root_joint Root>
 void invalidate_kinematics(workspace<Root>& ws) {
   ws.scratch.level = 0;
+  ws.scratch.planar.level = 0;
 }
 
 namespace detail {
