@@ -155,8 +155,13 @@ namespace detail {
 /// |u|^2 / m_eff(u) for a (not necessarily unit) direction u: |u|^2 / m_b + (r x u)^T I_w^-1 (r x
 /// u), the inverse effective mass of the free body at lever r (from its COM, world) along u, times
 /// |u|^2.
-inline double scaled_inverse_effective_mass(double inv_mass, const mat3& inv_inertia_world,
-                                            const vec3& r, const vec3& u) {
+#if defined(__GNUC__)
+// Inlined into the per-point loop: called twice per touching point, a call costs more than it.
+__attribute__((always_inline))
+#endif
+inline double
+scaled_inverse_effective_mass(double inv_mass, const mat3& inv_inertia_world, const vec3& r,
+                              const vec3& u) {
   const vec3 ru = r.cross(u);
   return inv_mass * u.squaredNorm() + ru.dot(inv_inertia_world * ru);
 }
@@ -254,11 +259,13 @@ void apply_contact_forces(const model<Root>& m, workspace<Root>& ws, const T& t,
     const vec3 disp_t = disp - n.dot(disp) * n;
     vec3 ft = -p.kt * disp_t - bt * vt;
     const double limit = p.mu * fn;
-    const double ft_norm = ft.norm();
+    // |ft| > limit compared squared (limit >= 0): the square root stays off the sticking path.
+    const double ft2 = ft.squaredNorm();
     s.sliding[k] = 0;
-    if (ft_norm > limit) {
+    if (ft2 > limit * limit) {
       // Sliding: kinetic friction mu f_n against the would-be sticking force; the anchor follows so
       // that its spring alone is on the cone (and sticking resumes once the pull drops inside).
+      const double ft_norm = std::sqrt(ft2);
       ft = ft_norm > 0.0 ? vec3(ft * (limit / ft_norm)) : vec3::Zero();
       s.anchor[k] = pw + ft / p.kt;
       s.sliding[k] = 1;
@@ -266,7 +273,9 @@ void apply_contact_forces(const model<Root>& m, workspace<Root>& ws, const T& t,
     const vec3 f = fn * n + ft;
     s.normal_force[k] = fn;
     s.force[k] = f;
-    add_point_force(m, ws, b, pw, f);
+    // add_point_force, written out (the lever rb from the body origin is already known).
+    ws.f_ext[b].template head<3>() += rb.cross(f);
+    ws.f_ext[b].template tail<3>() += f;
   }
 }
 
