@@ -2,8 +2,12 @@
 // rollouts at 2400 Hz of the 3D humanoid (Wang et al. 2009) holding a standing pose on flat ground
 // with all its foot and toe contact points, and of the 7-link planar human (Sharon & van de Panne
 // 2005). Counters: real_time_factor (simulated seconds per wall second) and us_per_step.
-// MuJoCo's mj_step on the same character is timed by benchmarks/mujoco_peer (BM_MuJoCo_*).
+// When MuJoCo is found (GAITSYNTH_HAVE_MUJOCO), this binary also registers the MuJoCo peer cases
+// (BM_MuJoCo_*, benchmarks/mujoco_peer/mujoco_peer.hpp: mj_step on the exported MJCF of the same
+// characters at the same timestep), so the gaitsynth / mj_step ratio comes from one run.
 #include <benchmark/benchmark.h>
+
+#include "mujoco_peer/mujoco_peer.hpp"
 
 #include "gaitsynth/actuators/pd.hpp"
 #include "gaitsynth/contact/flat_terrain.hpp"
