@@ -3,16 +3,22 @@
 // line, the synthesis run with progress, the paper's 70 s check, and the outputs every example
 // writes: the optimized controller (JSON), the 70 s trajectory (CSV) and a one-line JSON summary
 // on stdout. Everything else goes to stderr.
+#include <algorithm>
+#include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <iostream>
 #include <nlohmann/json.hpp>
+#include <sstream>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 #include "gaitsynth/controllers/nearest_neighbor_json.hpp"
 #include "gaitsynth/controllers/nearest_neighbor_synthesis.hpp"
 #include "gaitsynth/io/trajectory_csv.hpp"
+#include "gaitsynth/objectives/mass_distance.hpp"
+#include "gaitsynth/viz/cli.hpp"
 
 namespace sharon_example {
 
@@ -23,6 +29,13 @@ struct cli {
   double check_seconds = 70.0;
   std::string keyframes;  // empty: the example's data file
   bool single_start = false;  // the paper's cost: one start state (no perturbed copies)
+  double max_horizon = -1.0;  // -1: the example's default (2 s, section V.C)
+  int bumpy_training = -1;    // -1: the example's default number of bumpy training terrains
+  int body_training = -1;     // -1: the example's default number of randomized training bodies
+  bool align_style = false;   // mass distance on shapes only (mass_distance_options::align_horizontal)
+  std::vector<double> horizons;     // explicit episode horizons, s (overrides --max-horizon)
+  std::string initial_controller;  // start from this saved controller instead of the keyframes
+  gaitsynth::viz_outputs viz;      // --html, --filmstrip, ... of the 70 s check (viz/cli.hpp)
 };
 
 inline void usage(const char* name, const char* what) {
@@ -32,14 +45,28 @@ inline void usage(const char* name, const char* what) {
             << "  --threads N                evaluation threads (default 2)\n"
             << "  --evaluations-per-episode N  SDS budget per bootstrapping episode\n"
             << "  --check-seconds S          length of the final test rollout (default 70)\n"
+            << "  --max-horizon S            last bootstrapping episode, s (episodes every 0.2 s\n"
+            << "                             from 0.2 s; default: the example's, usually 2 s)\n"
+            << "  --horizons T1,T2,...       explicit episode horizons, s (e.g. 2,3,4)\n"
+            << "  --initial-controller FILE  start the search from a saved controller (JSON)\n"
+            << "  --bumpy-training N         also evaluate each candidate on N bumpy terrains\n"
+            << "                             (where the example supports it)\n"
+            << "  --body-training N          also evaluate each candidate on N randomized bodies\n"
+            << "                             (where the example supports it)\n"
+            << "  --align-style              compare shapes only: the target follows the COM along x\n"
+            << "                             (for long episodes, where a small speed difference\n"
+            << "                             would otherwise dominate eq. 2)\n"
             << "  --keyframes FILE           target motion (default: the data/sharon2005 file)\n"
             << "  --single-start             evaluate each candidate from the first keyframe only\n"
             << "                             (the paper's cost); default: also from 3 perturbed\n"
-            << "                             copies (velocity x0.9, x1.1, 1 cm higher)\n";
+            << "                             copies (velocity x0.9, x1.1, 1 cm higher)\n"
+            << "the 70 s check rollout (the filmstrip shows its first 3 s):\n"
+            << gaitsynth::viz_flags_help();
 }
 
 inline cli parse(int argc, char** argv, const char* what) {
   cli c;
+  c.viz = gaitsynth::extract_viz_flags(argc, argv);  // --html FILE etc. (viz/cli.hpp)
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
     auto value = [&]() -> std::string {
@@ -52,6 +79,23 @@ inline cli parse(int argc, char** argv, const char* what) {
     else if (a == "--check-seconds") c.check_seconds = std::stod(value());
     else if (a == "--keyframes") c.keyframes = value();
     else if (a == "--single-start") c.single_start = true;
+    else if (a == "--max-horizon") c.max_horizon = std::stod(value());
+    else if (a == "--bumpy-training") c.bumpy_training = std::stoi(value());
+    else if (a == "--body-training") c.body_training = std::stoi(value());
+    else if (a == "--align-style") c.align_style = true;
+    else if (a == "--initial-controller") c.initial_controller = value();
+    else if (a == "--horizons") {
+      std::stringstream ss(value());
+      std::string item;
+      while (std::getline(ss, item, ',')) {
+        const double h = std::stod(item);
+        if (!(h > 0.0 && h <= 600.0))
+          throw std::invalid_argument("--horizons: each horizon must be in (0, 600] s, got '" +
+                                      item + "'");
+        c.horizons.push_back(h);
+      }
+      if (c.horizons.empty()) throw std::invalid_argument("--horizons needs at least one value");
+    }
     else if (a == "--help" || a == "-h") {
       usage(argv[0], what);
       std::exit(0);
@@ -61,6 +105,15 @@ inline cli parse(int argc, char** argv, const char* what) {
     }
   }
   if (c.threads < 1) throw std::invalid_argument("--threads must be >= 1");
+  if (c.body_training < -1 || c.body_training > 64)
+    throw std::invalid_argument("--body-training must be in [0, 64], got " +
+                                std::to_string(c.body_training));
+  if (c.bumpy_training < -1 || c.bumpy_training > 64)
+    throw std::invalid_argument("--bumpy-training must be in [0, 64], got " +
+                                std::to_string(c.bumpy_training));
+  if (c.max_horizon != -1.0 && !(c.max_horizon >= 0.2 && c.max_horizon <= 60.0))
+    throw std::invalid_argument("--max-horizon must be in [0.2, 60] s, got " +
+                                std::to_string(c.max_horizon));
   return c;
 }
 
@@ -113,12 +166,60 @@ inline std::string data_file(const std::string& name) {
   return std::string(GAITSYNTH_SOURCE_DIR) + "/data/sharon2005/" + name;
 }
 
+/// The mass-distance options of the cost (--align-style).
+inline gaitsynth::mass_distance_options style_options(const cli& c) {
+  gaitsynth::mass_distance_options o;
+  o.align_horizontal = c.align_style;
+  return o;
+}
+
+/// The controller the search starts from: the one built along the keyframes (c0), or the saved
+/// controller of --initial-controller (which must fit the same model and node layout).
+template <class Model, class Controller>
+Controller initial_controller(const Model& m, const cli& c, Controller c0) {
+  if (c.initial_controller.empty()) return c0;
+  Controller loaded = gaitsynth::load_nearest_neighbor(m, c.initial_controller);
+  if (loaded.num_parameters() != c0.num_parameters())
+    throw std::invalid_argument("--initial-controller " + c.initial_controller + " has " +
+                                std::to_string(loaded.num_parameters()) +
+                                " parameters, this example's controller " +
+                                std::to_string(c0.num_parameters()));
+  return loaded;
+}
+
 /// The cost's start states: the problem's initial state, plus (unless --single-start) perturbed
 /// copies of it (section VII's remedy; see perturbed_starts).
 template <class Problem>
 void set_starts(Problem& prob, const cli& c) {
   if (c.single_start) prob.starts.clear();
   else prob.starts = gaitsynth::perturbed_starts(prob.character, prob.options.initial_state);
+}
+
+/// The viewer flags (--html, --filmstrip, ...; viz/cli.hpp) for the check rollout; the filmstrip
+/// is a strobe picture of the first 3 s (frames every 0.1 s, like the paper's Figures 5b-8).
+template <class Model>
+void write_views(const Model& m, const gaitsynth::trajectory& traj, const cli& c,
+                 const std::string& title) {
+  if (!c.viz.any()) return;
+  gaitsynth::viz_outputs v = c.viz;
+  v.html_options.title = title;
+  v.filmstrip.t_begin = 0.0;
+  v.filmstrip.t_end = std::min(3.0, traj.frames.back().t);
+  v.filmstrip.interval = 0.1;
+  v.filmstrip.title = title;
+  gaitsynth::write_viz_outputs(m, traj, v, &std::cerr);
+}
+
+/// Rollouts behind one cost evaluation (start states, and those of the variants if any).
+template <class Problem>
+std::size_t rollouts_per_evaluation(const Problem& prob) {
+  std::size_t n = prob.starts.empty() ? 1 : prob.starts.size();
+  if constexpr (requires { prob.variants; }) {
+    // The main problem of a problem with variants may have variants itself.
+    n = rollouts_per_evaluation(static_cast<const std::decay_t<decltype(prob.main())>&>(prob.main()));
+    for (const auto& v : prob.variants) n += rollouts_per_evaluation(v);
+  }
+  return n;
 }
 
 /// Runs the synthesis, the check rollout, writes the outputs and prints the summary line.
@@ -130,16 +231,23 @@ int synthesize_and_report(const std::string& name, const Problem& prob,
   using namespace gaitsynth;
   so.threads = c.threads;
   if (c.evaluations_per_episode >= 0) so.evaluations_per_episode = c.evaluations_per_episode;
+  if (!c.horizons.empty()) {
+    so.horizons = c.horizons;
+  } else if (c.max_horizon > 0) {
+    so.horizons.clear();
+    for (int k = 1; k <= static_cast<int>(std::floor(c.max_horizon * 5.0 + 1e-9)); ++k)
+      so.horizons.push_back(k / 5.0);
+  }
   so.run.progress = &std::cerr;
   so.run.progress_interval = 2.0;
   std::filesystem::create_directories(c.out_dir);
   so.run.log_file = c.out_dir / (name + ".convergence.csv");
   const std::size_t n_params = prob.controller.num_parameters();
-  const std::size_t n_starts = prob.starts.empty() ? 1 : prob.starts.size();
+  const std::size_t n_starts = rollouts_per_evaluation(prob);
   std::cerr << name << ": optimizing " << n_params << " parameters of a "
             << prob.controller.num_nodes() << "-node controller ("
             << prob.controller.num_free_nodes() << " free) with SDS on " << so.threads
-            << " thread(s), " << n_starts << " start state(s) per evaluation\n";
+            << " thread(s), " << n_starts << " rollout(s) per evaluation\n";
   const nn_synthesis_result r = synthesize_nearest_neighbor(prob, so);
   std::cerr << name << ": " << r.evaluations << " evaluations in " << r.wall_seconds
             << " s; checking the controller over " << c.check_seconds << " s\n";
@@ -153,7 +261,7 @@ int synthesize_and_report(const std::string& name, const Problem& prob,
   info["evaluations"] = r.evaluations;
   info["wall_seconds"] = r.wall_seconds;
   info["threads"] = so.threads;
-  info["start_states"] = n_starts;
+  info["rollouts_per_evaluation"] = n_starts;
   info["rollouts"] = r.evaluations * static_cast<long long>(n_starts);
   info["episodes"] = r.horizons;
   nlohmann::ordered_json ev = nlohmann::ordered_json::array();
@@ -171,6 +279,7 @@ int synthesize_and_report(const std::string& name, const Problem& prob,
   const auto csv_path = c.out_dir / (name + ".csv");
   save_nearest_neighbor(ctrl_path, prob.character, ctrl, info);
   save_trajectory_csv(traj, csv_path.string());
+  write_views(prob.character, traj, c, name);
 
   nlohmann::ordered_json summary;
   summary["example"] = name;

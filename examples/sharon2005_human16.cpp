@@ -23,10 +23,11 @@ int main(int argc, char** argv) try {
       c.keyframes.empty() ? sharon_example::data_file("human16_walk.keyframes.json") : c.keyframes;
   const keyframe_motion<planar_root> target = load_keyframes(m, kf_path);
   const nearest_neighbor_options o = sharon_example::human16_options(m);
-  const nearest_neighbor_controller<planar_root> c0(m, target, o);
+  const nearest_neighbor_controller<planar_root> c0 = sharon_example::initial_controller(
+      m, c, nearest_neighbor_controller<planar_root>(m, target, o));
   rollout_options ro;
   ro.initial_state = target.initial_state();
-  nn_problem prob{m, torque_actuator{}, c0, mass_distance<planar_root>(m, target),
+  nn_problem prob{m, torque_actuator{}, c0, mass_distance<planar_root>(m, target, sharon_example::style_options(c)),
                         flat_terrain{}, semi_implicit_euler{}, ro};
   sharon_example::set_starts(prob, c);
   return sharon_example::synthesize_and_report("sharon2005_human16", prob,

@@ -7,8 +7,10 @@
 //   ./sharon2005_robustness [--controller FILE] [--out DIR] [--seconds S]
 //
 // Default controller: data/sharon2005/normal_walk.controller.json (written by
-// sharon2005_normal_walk). Writes DIR/sharon2005_robustness_<variant>.csv and prints one JSON line
-// per variant, then a summary line, on stdout.
+// sharon2005_normal_walk). Writes DIR/sharon2005_robustness_<variant>.csv (70 s, 60 frames/s) and
+// .svg (strobe picture of the first 3 s) and prints one JSON line per variant, then a summary
+// line, on stdout.
+#include <algorithm>
 #include <filesystem>
 #include <iostream>
 #include <nlohmann/json.hpp>
@@ -22,6 +24,7 @@
 #include "gaitsynth/io/keyframes_json.hpp"
 #include "gaitsynth/io/trajectory_csv.hpp"
 #include "gaitsynth/objectives/mass_distance.hpp"
+#include "gaitsynth/viz/filmstrip_svg.hpp"
 #include "sharon2005_scenarios.hpp"
 
 int main(int argc, char** argv) try {
@@ -60,6 +63,14 @@ int main(int argc, char** argv) try {
     const walk_check w = check_walk(prob, x, seconds, &traj, 40);
     const auto csv = out / ("sharon2005_robustness_" + name + ".csv");
     save_trajectory_csv(traj, csv.string());
+    // A strobe picture of the first 3 s, like the paper's Figures 5b and 8.
+    const auto svg = out / ("sharon2005_robustness_" + name + ".svg");
+    filmstrip_options fo;
+    fo.t_begin = 0.0;
+    fo.t_end = std::min(3.0, w.seconds);
+    fo.interval = 0.1;
+    fo.title = what;
+    save_filmstrip_svg(m, traj, svg.string(), fo);
     const bool ok = !w.fell && w.average_speed > 0.3;
     walked += ok;
     ++total;
@@ -72,6 +83,7 @@ int main(int argc, char** argv) try {
     j["average_speed"] = std::round(w.average_speed * 1000) / 1000;
     j["walks"] = ok;
     j["trajectory_csv"] = csv.string();
+    j["filmstrip_svg"] = svg.string();
     std::cout << j.dump() << std::endl;
     std::cerr << name << ": " << (ok ? "walked " : "FAILED after ") << w.seconds << " s, "
               << w.distance << " m (" << what << ")\n";

@@ -59,6 +59,48 @@ inline gaitsynth::height_field_terrain bumpy_terrain(double max_slope_deg = 11.0
   return gaitsynth::height_field_terrain(Eigen::Vector2d(x0, 0.0), spacing, h);
 }
 
+/// Terrains for a cost that rewards walking blindly over bumps (examples/sharon2005_normal_walk
+/// --bumpy-training N): profiles like bumpy_terrain's, bumpy from the start (so a 2 s episode meets
+/// them), with seeds 1..n -- never the test profile's seed 2005.
+inline std::vector<gaitsynth::height_field_terrain> training_terrains(int n,
+                                                                      double max_slope_deg = 11.0) {
+  std::vector<gaitsynth::height_field_terrain> t;
+  for (int k = 1; k <= n; ++k)
+    t.push_back(bumpy_terrain(max_slope_deg, static_cast<std::uint64_t>(k), 0.5, 2.0, 20.0, -10.0));
+  return t;
+}
+
+/// Training bodies for a cost that rewards robustness to modeling errors
+/// (examples/sharon2005_normal_walk --body-training N), in a box around the paper's Figure 8
+/// changes (torso 40 -> 28 kg, thigh 0.46 -> 0.6 m, shin 0.44 -> 0.25 or 0.8 m): torso mass in
+/// [26, 48] kg, thigh length in [0.40, 0.65] m, shin length in [0.22, 0.85] m, inertias as rods.
+/// The first 8 are the box's corners, the rest seeded uniform draws (seeds 1001, 1002, ...). None
+/// is a Figure 8 body (the tests keep those for themselves), but those lie inside the box: for us
+/// they test interpolation, where the paper's controller, optimized for the nominal body alone,
+/// extrapolated.
+inline std::vector<gaitsynth::sharon2005_human7_parameters> training_bodies(int n) {
+  constexpr double torso[2] = {26.0, 48.0}, thigh[2] = {0.40, 0.65}, shin[2] = {0.22, 0.85};
+  std::vector<gaitsynth::sharon2005_human7_parameters> v;
+  for (int k = 0; k < n; ++k) {
+    gaitsynth::sharon2005_human7_parameters p;
+    if (k < 8) {
+      p.torso_mass = torso[k & 1];
+      p.thigh_length = thigh[(k >> 1) & 1];
+      p.shin_length = shin[(k >> 2) & 1];
+    } else {
+      std::mt19937_64 rng(static_cast<std::uint64_t>(1001 + k - 8));
+      auto uniform = [&](const double (&r)[2]) {
+        return r[0] + (r[1] - r[0]) * static_cast<double>(rng() >> 11) * 0x1.0p-53;
+      };
+      p.torso_mass = uniform(torso);
+      p.thigh_length = uniform(thigh);
+      p.shin_length = uniform(shin);
+    }
+    v.push_back(p.with_rod_inertias());
+  }
+  return v;
+}
+
 /// Largest |gradient| of the profile, degrees (for reports and tests).
 inline double max_gradient_deg(const gaitsynth::height_field_terrain& t, double x_begin,
                                double x_end) {

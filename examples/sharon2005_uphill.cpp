@@ -21,11 +21,12 @@ int main(int argc, char** argv) try {
   const std::string kf_path =
       c.keyframes.empty() ? sharon_example::data_file("uphill.keyframes.json") : c.keyframes;
   const keyframe_motion<planar_root> target = load_keyframes(m, kf_path);
-  const nearest_neighbor_controller<planar_root> c0(m, target, sharon_example::human7_options());
+  const nearest_neighbor_controller<planar_root> c0 = sharon_example::initial_controller(
+      m, c, nearest_neighbor_controller<planar_root>(m, target, sharon_example::human7_options()));
   rollout_options ro;
   ro.initial_state = target.initial_state();
   const slope_terrain hill(10.0 * std::numbers::pi / 180.0);
-  nn_problem prob{m, torque_actuator{}, c0, mass_distance<planar_root>(m, target), hill,
+  nn_problem prob{m, torque_actuator{}, c0, mass_distance<planar_root>(m, target, sharon_example::style_options(c)), hill,
                         semi_implicit_euler{}, ro};
   sharon_example::set_starts(prob, c);
   return sharon_example::synthesize_and_report("sharon2005_uphill", prob,

@@ -8,7 +8,9 @@
 //   3. The 7-link planar human of Sharon & van de Panne 2005 stands on a 5 degree uphill slope,
 //      its ankles dorsiflexed by the slope angle so that its feet lie flat with the body upright.
 //
-// Usage: simulation_demo [--csv FILE]   (FILE: the first rollout's trajectory as CSV)
+// Usage: simulation_demo [--html FILE] [--filmstrip FILE] [--gait-svg FILE] [--bvh FILE]
+//                        [--csv FILE] [--mjcf-replay FILE]
+// The viewer flags (viz/cli.hpp, docs/viewer.md) write the first rollout, the pushed humanoid.
 #include <chrono>
 #include <cstdio>
 #include <cstring>
@@ -56,14 +58,17 @@ void print_result(const rollout_result& r, double wall) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  std::string csv_path;
-  for (int i = 1; i < argc; ++i) {
-    if (std::strcmp(argv[i], "--csv") == 0 && i + 1 < argc) {
-      csv_path = argv[++i];
-    } else {
-      std::fprintf(stderr, "usage: %s [--csv FILE]\n", argv[0]);
-      return 2;
-    }
+  viz_outputs views;
+  try {
+    views = extract_viz_flags(argc, argv);
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "error: %s\n", e.what());
+    return 2;
+  }
+  if (argc > 1) {
+    std::fprintf(stderr, "unknown option '%s'\nusage: %s [options]\n%s", argv[1], argv[0],
+                 viz_flags_help());
+    return 2;
   }
 
   // ---- 1. standing humanoid, pushed -------------------------------------------------------------
@@ -89,9 +94,9 @@ int main(int argc, char** argv) {
   });
   print_frames(tr, 0.25);
   print_result(r, wall);
-  if (!csv_path.empty()) {
-    save_csv(csv_path, tr);
-    std::printf("  trajectory written to %s (%zu frames)\n", csv_path.c_str(), tr.frames.size());
+  if (views.any()) {
+    views.html_options.title = "gaitsynth demo: standing humanoid pushed at 1 s";
+    write_viz_outputs(humanoid, tr, views, &std::cerr);
   }
 
   // ---- 2. the same character, unactuated ------------------------------------------------------
