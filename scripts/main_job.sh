@@ -10,4 +10,5 @@ cmake -S . -B build/main -G Ninja -DCMAKE_BUILD_TYPE=Release \
 target=sharon2005_normal_walk
 cmake --build build/main -j"$(nproc)" --target "$target"
 mkdir -p out
-./build/main/examples/"$target" --out out "$@"
+./build/main/examples/"$target" --out out \
+  --html out/"$target".html --filmstrip out/"$target".svg "$@"
