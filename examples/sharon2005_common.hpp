@@ -33,6 +33,7 @@ struct cli {
   int bumpy_training = -1;    // -1: the example's default number of bumpy training terrains
   int body_training = -1;     // -1: the example's default number of randomized training bodies
   bool align_style = false;   // mass distance on shapes only (mass_distance_options::align_horizontal)
+  bool stage1_only = false;   // normal walk: stop after the paper's flat-ground stage
   std::vector<double> horizons;     // explicit episode horizons, s (overrides --max-horizon)
   std::string initial_controller;  // start from this saved controller instead of the keyframes
   gaitsynth::viz_outputs viz;      // --html, --filmstrip, ... of the 70 s check (viz/cli.hpp)
@@ -53,6 +54,7 @@ inline void usage(const char* name, const char* what) {
             << "                             (where the example supports it)\n"
             << "  --body-training N          also evaluate each candidate on N randomized bodies\n"
             << "                             (where the example supports it)\n"
+            << "  --stage1-only              normal walk: only the paper's flat-ground stage\n"
             << "  --align-style              compare shapes only: the target follows the COM along x\n"
             << "                             (for long episodes, where a small speed difference\n"
             << "                             would otherwise dominate eq. 2)\n"
@@ -83,6 +85,7 @@ inline cli parse(int argc, char** argv, const char* what) {
     else if (a == "--bumpy-training") c.bumpy_training = std::stoi(value());
     else if (a == "--body-training") c.body_training = std::stoi(value());
     else if (a == "--align-style") c.align_style = true;
+    else if (a == "--stage1-only") c.stage1_only = true;
     else if (a == "--initial-controller") c.initial_controller = value();
     else if (a == "--horizons") {
       std::stringstream ss(value());
@@ -222,12 +225,19 @@ std::size_t rollouts_per_evaluation(const Problem& prob) {
   return n;
 }
 
+/// Totals of stages run before the reported one (the summary counts them in).
+struct earlier_stages {
+  long long evaluations = 0, rollouts = 0;
+  double wall_seconds = 0.0;
+};
+
 /// Runs the synthesis, the check rollout, writes the outputs and prints the summary line.
 /// Returns the process exit code (0 also when the controller falls: that is a result, reported).
 template <class Problem>
 int synthesize_and_report(const std::string& name, const Problem& prob,
                           gaitsynth::nn_synthesis_options so, const cli& c,
-                          nlohmann::ordered_json extra = nlohmann::ordered_json::object()) {
+                          nlohmann::ordered_json extra = nlohmann::ordered_json::object(),
+                          const earlier_stages& before = {}) {
   using namespace gaitsynth;
   so.threads = c.threads;
   if (c.evaluations_per_episode >= 0) so.evaluations_per_episode = c.evaluations_per_episode;
@@ -263,6 +273,11 @@ int synthesize_and_report(const std::string& name, const Problem& prob,
   info["threads"] = so.threads;
   info["rollouts_per_evaluation"] = n_starts;
   info["rollouts"] = r.evaluations * static_cast<long long>(n_starts);
+  if (before.evaluations > 0) {
+    info["earlier_stages_evaluations"] = before.evaluations;
+    info["earlier_stages_rollouts"] = before.rollouts;
+    info["earlier_stages_wall_seconds"] = before.wall_seconds;
+  }
   info["episodes"] = r.horizons;
   nlohmann::ordered_json ev = nlohmann::ordered_json::array();
   for (const auto& s : r.episodes.stages) ev.push_back(s.evaluations);
@@ -283,9 +298,9 @@ int synthesize_and_report(const std::string& name, const Problem& prob,
 
   nlohmann::ordered_json summary;
   summary["example"] = name;
-  summary["evaluations"] = r.evaluations;
-  summary["rollouts"] = r.evaluations * static_cast<long long>(n_starts);
-  summary["wall_seconds"] = std::round(r.wall_seconds * 100) / 100;
+  summary["evaluations"] = before.evaluations + r.evaluations;
+  summary["rollouts"] = before.rollouts + r.evaluations * static_cast<long long>(n_starts);
+  summary["wall_seconds"] = std::round((before.wall_seconds + r.wall_seconds) * 100) / 100;
   summary["cost"] = r.value;
   summary["seconds_walked"] = w.seconds;
   summary["fell"] = w.fell;

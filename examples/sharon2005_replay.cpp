@@ -4,7 +4,7 @@
 // filmstrip, the CSV trajectory, and a one-line JSON summary on stdout.
 //
 //   ./sharon2005_replay --result NAME [--seconds S] [--controller FILE] [--out DIR]
-//                       [--html FILE] [--filmstrip FILE] [--filmstrip-seconds S] [--bvh FILE] ...
+//                       [--html FILE] [--filmstrip FILE] [--filmstrip-seconds S] [--filmstrip-from S] ...
 //
 // NAME: normal_walk (Fig. 5a/b), human16 (5c/d), high_knee (6a/b), backswing (6c/d), uphill (7),
 // torso_28kg (8a), shin_0.25_thigh_0.6 (8b), shin_0.8 (8c), bumpy (8d). The Figure 8 variants run
@@ -43,6 +43,7 @@ struct options {
   std::filesystem::path out_dir = "out";
   viz_outputs viz;  // --html, --filmstrip, --gait-svg, --bvh, --csv, --mjcf-replay
   double filmstrip_seconds = 3.0;
+  double filmstrip_from = 0.0;
 };
 
 const char* kResults =
@@ -57,6 +58,7 @@ void usage(const char* name) {
                "data/sharon2005)\n"
             << "  --out DIR              folder of the CSV trajectory (default out/)\n"
             << "  --filmstrip-seconds S  length of the filmstrip (default 3)\n"
+            << "  --filmstrip-from S     its start time (default 0)\n"
             << viz_flags_help();
 }
 
@@ -74,6 +76,7 @@ options parse(int argc, char** argv) {
     else if (a == "--controller") o.controller = value();
     else if (a == "--out") o.out_dir = value();
     else if (a == "--filmstrip-seconds") o.filmstrip_seconds = std::stod(value());
+    else if (a == "--filmstrip-from") o.filmstrip_from = std::stod(value());
     else if (a == "--help" || a == "-h") {
       usage(argv[0]);
       std::exit(0);
@@ -88,6 +91,9 @@ options parse(int argc, char** argv) {
   }
   if (!(o.seconds > 0.0 && o.seconds <= 3600.0))
     throw std::invalid_argument("--seconds must be in (0, 3600], got " + std::to_string(o.seconds));
+  if (!(o.filmstrip_from >= 0.0 && o.filmstrip_from < o.seconds))
+    throw std::invalid_argument("--filmstrip-from must be in [0, --seconds), got " +
+                                std::to_string(o.filmstrip_from));
   if (!(o.filmstrip_seconds > 0.0))
     throw std::invalid_argument("--filmstrip-seconds must be > 0, got " +
                                 std::to_string(o.filmstrip_seconds));
@@ -123,8 +129,8 @@ int run(const options& o, const std::string& title, const planar_model& m,
   save_trajectory_csv(traj, csv.string());
   viz_outputs v = o.viz;
   v.html_options.title = title;
-  v.filmstrip.t_begin = 0.0;
-  v.filmstrip.t_end = std::min(o.filmstrip_seconds, traj.frames.back().t);
+  v.filmstrip.t_begin = std::min(o.filmstrip_from, traj.frames.back().t);
+  v.filmstrip.t_end = std::min(o.filmstrip_from + o.filmstrip_seconds, traj.frames.back().t);
   v.filmstrip.interval = 0.1;
   v.filmstrip.title = title;
   write_viz_outputs(m, traj, v, &std::cerr);
