@@ -24,6 +24,7 @@
 #include "gaitsynth/io/keyframes_json.hpp"
 #include "gaitsynth/io/trajectory_csv.hpp"
 #include "gaitsynth/objectives/mass_distance.hpp"
+#include "gaitsynth/viz/cli.hpp"
 #include "gaitsynth/viz/filmstrip_svg.hpp"
 #include "sharon2005_scenarios.hpp"
 
@@ -33,13 +34,18 @@ int main(int argc, char** argv) try {
   std::string ctrl_path = data + "normal_walk.controller.json";
   std::filesystem::path out = "out";
   double seconds = 70.0;
+  // Viewer flags (viz/cli.hpp): each is written once per variant, the variant's name inserted
+  // before the file's extension (--html out/r.html gives out/r_torso_28kg.html, ...).
+  const viz_outputs views = extract_viz_flags(argc, argv);
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
     if (a == "--controller" && i + 1 < argc) ctrl_path = argv[++i];
     else if (a == "--out" && i + 1 < argc) out = argv[++i];
     else if (a == "--seconds" && i + 1 < argc) seconds = std::stod(argv[++i]);
     else {
-      std::cerr << "usage: " << argv[0] << " [--controller FILE] [--out DIR] [--seconds S]\n";
+      std::cerr << "usage: " << argv[0] << " [--controller FILE] [--out DIR] [--seconds S]\n"
+                << "viewer outputs, one per variant (NAME inserted before the extension):\n"
+                << viz_flags_help();
       return a == "--help" ? 0 : 1;
     }
   }
@@ -71,6 +77,20 @@ int main(int argc, char** argv) try {
     fo.interval = 0.1;
     fo.title = what;
     save_filmstrip_svg(m, traj, svg.string(), fo);
+    if (views.any()) {
+      auto per_variant = [&](const std::string& f) {
+        if (f.empty()) return f;
+        const std::filesystem::path p(f);
+        return (p.parent_path() / (p.stem().string() + "_" + name + p.extension().string())).string();
+      };
+      viz_outputs v = views;
+      for (std::string* f : {&v.html, &v.filmstrip_svg, &v.gait_svg, &v.bvh, &v.trajectory_csv,
+                             &v.mjcf_replay})
+        *f = per_variant(*f);
+      v.html_options.title = what;
+      v.filmstrip = fo;
+      write_viz_outputs(m, traj, v, &std::cerr);
+    }
     const bool ok = !w.fell && w.average_speed > 0.3;
     walked += ok;
     ++total;
