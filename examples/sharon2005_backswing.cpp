@@ -27,8 +27,13 @@ int main(int argc, char** argv) try {
       m, c, nearest_neighbor_controller<planar_root>(m, target, o));
   rollout_options ro;
   ro.initial_state = target.initial_state();
-  nn_problem prob{m, torque_actuator{}, c0, mass_distance<planar_root>(m, target, sharon_example::style_options(c)),
-                        flat_terrain{}, semi_implicit_euler{}, ro};
+  nn_problem prob{m,
+                  torque_actuator{},
+                  c0,
+                  mass_distance<planar_root>(m, target, sharon_example::style_options(c)),
+                  flat_terrain{},
+                  semi_implicit_euler{},
+                  ro};
   sharon_example::set_starts(prob, c);
   nn_synthesis_options so = sharon_example::synthesis_defaults();
   // The forward-back-forward swing needs more than the usual 2 s: with episodes to 2 s (700

@@ -27,43 +27,45 @@ struct cli {
   unsigned threads = 2;
   long long evaluations_per_episode = -1;  // -1: the example's default
   double check_seconds = 70.0;
-  std::string keyframes;  // empty: the example's data file
+  std::string keyframes;      // empty: the example's data file
   bool single_start = false;  // the paper's cost: one start state (no perturbed copies)
   double max_horizon = -1.0;  // -1: the example's default (2 s, section V.C)
   int bumpy_training = -1;    // -1: the example's default number of bumpy training terrains
   int body_training = -1;     // -1: the example's default number of randomized training bodies
-  bool align_style = false;   // mass distance on shapes only (mass_distance_options::align_horizontal)
-  bool stage1_only = false;   // normal walk: stop after the paper's flat-ground stage
-  std::vector<double> horizons;     // explicit episode horizons, s (overrides --max-horizon)
+  bool align_style =
+      false;  // mass distance on shapes only (mass_distance_options::align_horizontal)
+  bool stage1_only = false;        // normal walk: stop after the paper's flat-ground stage
+  std::vector<double> horizons;    // explicit episode horizons, s (overrides --max-horizon)
   std::string initial_controller;  // start from this saved controller instead of the keyframes
   gaitsynth::viz_outputs viz;      // --html, --filmstrip, ... of the 70 s check (viz/cli.hpp)
 };
 
 inline void usage(const char* name, const char* what) {
-  std::cerr << name << ": " << what << "\n\n"
-            << "usage: " << name << " [options]\n"
-            << "  --out DIR                  output folder (default out/)\n"
-            << "  --threads N                evaluation threads (default 2)\n"
-            << "  --evaluations-per-episode N  SDS budget per bootstrapping episode\n"
-            << "  --check-seconds S          length of the final test rollout (default 70)\n"
-            << "  --max-horizon S            last bootstrapping episode, s (episodes every 0.2 s\n"
-            << "                             from 0.2 s; default: the example's, usually 2 s)\n"
-            << "  --horizons T1,T2,...       explicit episode horizons, s (e.g. 2,3,4)\n"
-            << "  --initial-controller FILE  start the search from a saved controller (JSON)\n"
-            << "  --bumpy-training N         also evaluate each candidate on N bumpy terrains\n"
-            << "                             (where the example supports it)\n"
-            << "  --body-training N          also evaluate each candidate on N randomized bodies\n"
-            << "                             (where the example supports it)\n"
-            << "  --stage1-only              normal walk: only the paper's flat-ground stage\n"
-            << "  --align-style              compare shapes only: the target follows the COM along x\n"
-            << "                             (for long episodes, where a small speed difference\n"
-            << "                             would otherwise dominate eq. 2)\n"
-            << "  --keyframes FILE           target motion (default: the data/sharon2005 file)\n"
-            << "  --single-start             evaluate each candidate from the first keyframe only\n"
-            << "                             (the paper's cost); default: also from 3 perturbed\n"
-            << "                             copies (velocity x0.9, x1.1, 1 cm higher)\n"
-            << "the 70 s check rollout (the filmstrip shows its first 3 s):\n"
-            << gaitsynth::viz_flags_help();
+  std::cerr
+      << name << ": " << what << "\n\n"
+      << "usage: " << name << " [options]\n"
+      << "  --out DIR                  output folder (default out/)\n"
+      << "  --threads N                evaluation threads (default 2)\n"
+      << "  --evaluations-per-episode N  SDS budget per bootstrapping episode\n"
+      << "  --check-seconds S          length of the final test rollout (default 70)\n"
+      << "  --max-horizon S            last bootstrapping episode, s (episodes every 0.2 s\n"
+      << "                             from 0.2 s; default: the example's, usually 2 s)\n"
+      << "  --horizons T1,T2,...       explicit episode horizons, s (e.g. 2,3,4)\n"
+      << "  --initial-controller FILE  start the search from a saved controller (JSON)\n"
+      << "  --bumpy-training N         also evaluate each candidate on N bumpy terrains\n"
+      << "                             (where the example supports it)\n"
+      << "  --body-training N          also evaluate each candidate on N randomized bodies\n"
+      << "                             (where the example supports it)\n"
+      << "  --stage1-only              normal walk: only the paper's flat-ground stage\n"
+      << "  --align-style              compare shapes only: the target follows the COM along x\n"
+      << "                             (for long episodes, where a small speed difference\n"
+      << "                             would otherwise dominate eq. 2)\n"
+      << "  --keyframes FILE           target motion (default: the data/sharon2005 file)\n"
+      << "  --single-start             evaluate each candidate from the first keyframe only\n"
+      << "                             (the paper's cost); default: also from 3 perturbed\n"
+      << "                             copies (velocity x0.9, x1.1, 1 cm higher)\n"
+      << "the 70 s check rollout (the filmstrip shows its first 3 s):\n"
+      << gaitsynth::viz_flags_help();
 }
 
 inline cli parse(int argc, char** argv, const char* what) {
@@ -75,18 +77,30 @@ inline cli parse(int argc, char** argv, const char* what) {
       if (i + 1 >= argc) throw std::invalid_argument(a + " needs a value");
       return argv[++i];
     };
-    if (a == "--out") c.out_dir = value();
-    else if (a == "--threads") c.threads = static_cast<unsigned>(std::stoul(value()));
-    else if (a == "--evaluations-per-episode") c.evaluations_per_episode = std::stoll(value());
-    else if (a == "--check-seconds") c.check_seconds = std::stod(value());
-    else if (a == "--keyframes") c.keyframes = value();
-    else if (a == "--single-start") c.single_start = true;
-    else if (a == "--max-horizon") c.max_horizon = std::stod(value());
-    else if (a == "--bumpy-training") c.bumpy_training = std::stoi(value());
-    else if (a == "--body-training") c.body_training = std::stoi(value());
-    else if (a == "--align-style") c.align_style = true;
-    else if (a == "--stage1-only") c.stage1_only = true;
-    else if (a == "--initial-controller") c.initial_controller = value();
+    if (a == "--out")
+      c.out_dir = value();
+    else if (a == "--threads")
+      c.threads = static_cast<unsigned>(std::stoul(value()));
+    else if (a == "--evaluations-per-episode")
+      c.evaluations_per_episode = std::stoll(value());
+    else if (a == "--check-seconds")
+      c.check_seconds = std::stod(value());
+    else if (a == "--keyframes")
+      c.keyframes = value();
+    else if (a == "--single-start")
+      c.single_start = true;
+    else if (a == "--max-horizon")
+      c.max_horizon = std::stod(value());
+    else if (a == "--bumpy-training")
+      c.bumpy_training = std::stoi(value());
+    else if (a == "--body-training")
+      c.body_training = std::stoi(value());
+    else if (a == "--align-style")
+      c.align_style = true;
+    else if (a == "--stage1-only")
+      c.stage1_only = true;
+    else if (a == "--initial-controller")
+      c.initial_controller = value();
     else if (a == "--horizons") {
       std::stringstream ss(value());
       std::string item;
@@ -98,8 +112,7 @@ inline cli parse(int argc, char** argv, const char* what) {
         c.horizons.push_back(h);
       }
       if (c.horizons.empty()) throw std::invalid_argument("--horizons needs at least one value");
-    }
-    else if (a == "--help" || a == "-h") {
+    } else if (a == "--help" || a == "-h") {
       usage(argv[0], what);
       std::exit(0);
     } else {
@@ -148,7 +161,10 @@ gaitsynth::nearest_neighbor_options human16_options(const Model& m) {
     const bool leg = n.find("hip") != std::string::npos || n.find("knee") != std::string::npos ||
                      n.find("ankle") != std::string::npos;
     const bool trunk = n == "back" || n == "chest";
-    o.kp.push_back(leg ? 600.0 : trunk ? 600.0 : n.find("wrist") != std::string::npos ? 20.0 : 100.0);
+    o.kp.push_back(leg                                    ? 600.0
+                   : trunk                                ? 600.0
+                   : n.find("wrist") != std::string::npos ? 20.0
+                                                          : 100.0);
   }
   o.kd.clear();
   for (double k : o.kp) o.kd.push_back(0.1 * k);
@@ -194,8 +210,10 @@ Controller initial_controller(const Model& m, const cli& c, Controller c0) {
 /// copies of it (section VII's remedy; see perturbed_starts).
 template <class Problem>
 void set_starts(Problem& prob, const cli& c) {
-  if (c.single_start) prob.starts.clear();
-  else prob.starts = gaitsynth::perturbed_starts(prob.character, prob.options.initial_state);
+  if (c.single_start)
+    prob.starts.clear();
+  else
+    prob.starts = gaitsynth::perturbed_starts(prob.character, prob.options.initial_state);
 }
 
 /// The viewer flags (--html, --filmstrip, ...; viz/cli.hpp) for the check rollout; the filmstrip
@@ -219,7 +237,8 @@ std::size_t rollouts_per_evaluation(const Problem& prob) {
   std::size_t n = prob.starts.empty() ? 1 : prob.starts.size();
   if constexpr (requires { prob.variants; }) {
     // The main problem of a problem with variants may have variants itself.
-    n = rollouts_per_evaluation(static_cast<const std::decay_t<decltype(prob.main())>&>(prob.main()));
+    n = rollouts_per_evaluation(
+        static_cast<const std::decay_t<decltype(prob.main())>&>(prob.main()));
     for (const auto& v : prob.variants) n += rollouts_per_evaluation(v);
   }
   return n;

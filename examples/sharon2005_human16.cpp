@@ -27,8 +27,13 @@ int main(int argc, char** argv) try {
       m, c, nearest_neighbor_controller<planar_root>(m, target, o));
   rollout_options ro;
   ro.initial_state = target.initial_state();
-  nn_problem prob{m, torque_actuator{}, c0, mass_distance<planar_root>(m, target, sharon_example::style_options(c)),
-                        flat_terrain{}, semi_implicit_euler{}, ro};
+  nn_problem prob{m,
+                  torque_actuator{},
+                  c0,
+                  mass_distance<planar_root>(m, target, sharon_example::style_options(c)),
+                  flat_terrain{},
+                  semi_implicit_euler{},
+                  ro};
   sharon_example::set_starts(prob, c);
   return sharon_example::synthesize_and_report("sharon2005_human16", prob,
                                                sharon_example::synthesis_defaults(), c,

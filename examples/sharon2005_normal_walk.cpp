@@ -34,7 +34,8 @@
 int main(int argc, char** argv) try {
   using namespace gaitsynth;
   const auto c = sharon_example::parse(
-      argc, argv, "optimize a normal walk of the 7-link human (Sharon & van de Panne 2005, Fig. 5a)");
+      argc, argv,
+      "optimize a normal walk of the 7-link human (Sharon & van de Panne 2005, Fig. 5a)");
   const planar_model m = sharon2005_human7();
   const std::string kf_path =
       c.keyframes.empty() ? sharon_example::data_file("normal_walk.keyframes.json") : c.keyframes;
@@ -52,9 +53,13 @@ int main(int argc, char** argv) try {
   sharon_example::cli args = c;
   sharon_example::earlier_stages before;
   if (two_stages) {
-    nn_problem flat{m, torque_actuator{}, c0,
+    nn_problem flat{m,
+                    torque_actuator{},
+                    c0,
                     mass_distance<planar_root>(m, target, sharon_example::style_options(c)),
-                    flat_terrain{}, semi_implicit_euler{}, ro};
+                    flat_terrain{},
+                    semi_implicit_euler{},
+                    ro};
     sharon_example::set_starts(flat, c);
     nn_synthesis_options so = sharon_example::synthesis_defaults();
     so.threads = c.threads;
@@ -66,19 +71,25 @@ int main(int argc, char** argv) try {
     std::cerr << "sharon2005_normal_walk: stage 1 of 2, flat ground, episodes 0.2 .. 2 s\n";
     const nn_synthesis_result r1 = synthesize_nearest_neighbor(flat, so);
     before.evaluations = r1.evaluations;
-    before.rollouts = r1.evaluations * static_cast<long long>(sharon_example::rollouts_per_evaluation(flat));
+    before.rollouts =
+        r1.evaluations * static_cast<long long>(sharon_example::rollouts_per_evaluation(flat));
     before.wall_seconds = r1.wall_seconds;
     std::cerr << "sharon2005_normal_walk: stage 1: " << r1.evaluations << " evaluations in "
-              << r1.wall_seconds << " s; stage 2 of 2, also on 4 bumpy profiles, episodes 2 .. 5 s\n";
+              << r1.wall_seconds
+              << " s; stage 2 of 2, also on 4 bumpy profiles, episodes 2 .. 5 s\n";
     c0 = flat.controller_with(r1.x);
     args.bumpy_training = 4;
     args.horizons = {2.0, 3.0, 4.0, 5.0};
     if (c.evaluations_per_episode < 0) args.evaluations_per_episode = 300;
   }
 
-  nn_problem prob{m, torque_actuator{}, c0,
+  nn_problem prob{m,
+                  torque_actuator{},
+                  c0,
                   mass_distance<planar_root>(m, target, sharon_example::style_options(c)),
-                  flat_terrain{}, semi_implicit_euler{}, ro};
+                  flat_terrain{},
+                  semi_implicit_euler{},
+                  ro};
   sharon_example::set_starts(prob, c);
   auto run = [&](const auto& problem) {
     return sharon_example::synthesize_and_report("sharon2005_normal_walk", problem,
@@ -94,9 +105,10 @@ int main(int argc, char** argv) try {
   for (const auto& ground : sharon_scenarios::training_terrains(n_bumpy)) {
     rollout_options rb = ro;
     rb.initial_state = target_start_states(m, target, ground, {0.0}).front();
-    bumpy.push_back(bumpy_problem{m, torque_actuator{}, c0,
-                                  mass_distance<planar_root>(m, target, sharon_example::style_options(c)),
-                                  ground, semi_implicit_euler{}, rb});
+    bumpy.push_back(
+        bumpy_problem{m, torque_actuator{}, c0,
+                      mass_distance<planar_root>(m, target, sharon_example::style_options(c)),
+                      ground, semi_implicit_euler{}, rb});
   }
   // Modeling errors (Fig. 8a-c) in the cost: training bodies (sharon_scenarios::training_bodies;
   // the problems keep references to the models, so they live in a vector sized once).
@@ -109,10 +121,10 @@ int main(int argc, char** argv) try {
     bodies.push_back(sharon2005_human7(p));
     rollout_options rb = ro;
     rb.initial_state = sharon_scenarios::start_state_for(bodies.back(), target);
-    changed.push_back(body_problem{bodies.back(), torque_actuator{}, c0,
-                                   mass_distance<planar_root>(bodies.back(), target,
-                                                              sharon_example::style_options(c)),
-                                   flat_terrain{}, semi_implicit_euler{}, rb});
+    changed.push_back(body_problem{
+        bodies.back(), torque_actuator{}, c0,
+        mass_distance<planar_root>(bodies.back(), target, sharon_example::style_options(c)),
+        flat_terrain{}, semi_implicit_euler{}, rb});
   }
   if (bumpy.empty() && changed.empty()) return run(prob);
   if (changed.empty()) return run(make_problem_with_variants(prob, std::move(bumpy)));

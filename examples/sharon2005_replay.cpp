@@ -4,7 +4,8 @@
 // filmstrip, the CSV trajectory, and a one-line JSON summary on stdout.
 //
 //   ./sharon2005_replay --result NAME [--seconds S] [--controller FILE] [--out DIR]
-//                       [--html FILE] [--filmstrip FILE] [--filmstrip-seconds S] [--filmstrip-from S] ...
+//                       [--html FILE] [--filmstrip FILE] [--filmstrip-seconds S] [--filmstrip-from
+//                       S] ...
 //
 // NAME: normal_walk (Fig. 5a/b), human16 (5c/d), high_knee (6a/b), backswing (6c/d), uphill (7),
 // torso_28kg (8a), shin_0.25_thigh_0.6 (8b), shin_0.8 (8c), bumpy (8d). The Figure 8 variants run
@@ -71,12 +72,18 @@ options parse(int argc, char** argv) {
       if (i + 1 >= argc) throw std::invalid_argument(a + " needs a value");
       return argv[++i];
     };
-    if (a == "--result") o.result = value();
-    else if (a == "--seconds") o.seconds = std::stod(value());
-    else if (a == "--controller") o.controller = value();
-    else if (a == "--out") o.out_dir = value();
-    else if (a == "--filmstrip-seconds") o.filmstrip_seconds = std::stod(value());
-    else if (a == "--filmstrip-from") o.filmstrip_from = std::stod(value());
+    if (a == "--result")
+      o.result = value();
+    else if (a == "--seconds")
+      o.seconds = std::stod(value());
+    else if (a == "--controller")
+      o.controller = value();
+    else if (a == "--out")
+      o.out_dir = value();
+    else if (a == "--filmstrip-seconds")
+      o.filmstrip_seconds = std::stod(value());
+    else if (a == "--filmstrip-from")
+      o.filmstrip_from = std::stod(value());
     else if (a == "--help" || a == "-h") {
       usage(argv[0]);
       std::exit(0);
@@ -117,10 +124,11 @@ int run(const options& o, const std::string& title, const planar_model& m,
   // As tests/sharon2005/claims.cpp: lowest foot point on z = 0 (every terrain here is level at the
   // start).
   ro.initial_state = place ? sharon_scenarios::start_state_for(m, target) : target.initial_state();
-  const nn_problem prob{m, torque_actuator{}, ctrl, mass_distance<planar_root>(m, target), ground,
-                        semi_implicit_euler{}, ro};
+  const nn_problem prob{m,      torque_actuator{},     ctrl, mass_distance<planar_root>(m, target),
+                        ground, semi_implicit_euler{}, ro};
   const auto p = ctrl.parameters();
-  const Eigen::VectorXd x = Eigen::Map<const Eigen::VectorXd>(p.data(), static_cast<Eigen::Index>(p.size()));
+  const Eigen::VectorXd x =
+      Eigen::Map<const Eigen::VectorXd>(p.data(), static_cast<Eigen::Index>(p.size()));
   trajectory traj;
   const walk_check w = check_walk(prob, x, o.seconds, &traj, 40);  // 60 frames/s
 

@@ -39,9 +39,12 @@ int main(int argc, char** argv) try {
   const viz_outputs views = extract_viz_flags(argc, argv);
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
-    if (a == "--controller" && i + 1 < argc) ctrl_path = argv[++i];
-    else if (a == "--out" && i + 1 < argc) out = argv[++i];
-    else if (a == "--seconds" && i + 1 < argc) seconds = std::stod(argv[++i]);
+    if (a == "--controller" && i + 1 < argc)
+      ctrl_path = argv[++i];
+    else if (a == "--out" && i + 1 < argc)
+      out = argv[++i];
+    else if (a == "--seconds" && i + 1 < argc)
+      seconds = std::stod(argv[++i]);
     else {
       std::cerr << "usage: " << argv[0] << " [--controller FILE] [--out DIR] [--seconds S]\n"
                 << "viewer outputs, one per variant (NAME inserted before the extension):\n"
@@ -55,7 +58,8 @@ int main(int argc, char** argv) try {
   const auto ctrl = load_nearest_neighbor(nominal, ctrl_path);
   const Eigen::VectorXd x = [&] {
     const auto p = ctrl.parameters();
-    return Eigen::VectorXd(Eigen::Map<const Eigen::VectorXd>(p.data(), static_cast<Eigen::Index>(p.size())));
+    return Eigen::VectorXd(
+        Eigen::Map<const Eigen::VectorXd>(p.data(), static_cast<Eigen::Index>(p.size())));
   }();
 
   int walked = 0, total = 0;
@@ -63,8 +67,9 @@ int main(int argc, char** argv) try {
                     const auto& ground) {
     rollout_options ro;
     ro.initial_state = sharon_scenarios::start_state_for(m, target);
-    const nn_problem prob{m, torque_actuator{}, ctrl, mass_distance<planar_root>(m, target),
-                          ground, semi_implicit_euler{}, ro};
+    const nn_problem prob{
+        m,      torque_actuator{},     ctrl, mass_distance<planar_root>(m, target),
+        ground, semi_implicit_euler{}, ro};
     trajectory traj;
     const walk_check w = check_walk(prob, x, seconds, &traj, 40);
     const auto csv = out / ("sharon2005_robustness_" + name + ".csv");
@@ -81,11 +86,12 @@ int main(int argc, char** argv) try {
       auto per_variant = [&](const std::string& f) {
         if (f.empty()) return f;
         const std::filesystem::path p(f);
-        return (p.parent_path() / (p.stem().string() + "_" + name + p.extension().string())).string();
+        return (p.parent_path() / (p.stem().string() + "_" + name + p.extension().string()))
+            .string();
       };
       viz_outputs v = views;
-      for (std::string* f : {&v.html, &v.filmstrip_svg, &v.gait_svg, &v.bvh, &v.trajectory_csv,
-                             &v.mjcf_replay})
+      for (std::string* f :
+           {&v.html, &v.filmstrip_svg, &v.gait_svg, &v.bvh, &v.trajectory_csv, &v.mjcf_replay})
         *f = per_variant(*f);
       v.html_options.title = what;
       v.filmstrip = fo;

@@ -6,8 +6,8 @@
 // (b) shin 0.44 -> 0.25 m with thigh 0.46 -> 0.6 m, (c) shin 0.44 -> 0.8 m, (d) bumpy terrain
 // with gradients up to 11 degrees, walked blindly (the controller senses nothing of it).
 #include <Eigen/Core>
-#include <cmath>
 #include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <numbers>
 #include <random>
@@ -27,12 +27,9 @@ namespace sharon_scenarios {
 /// is exactly max_slope_deg (the paper gives only that); flat (and blended in over 1 m) before
 /// x = flat_until so that the walk starts on level ground. With the defaults the heights span about
 /// 5 to 8 cm.
-inline gaitsynth::height_field_terrain bumpy_terrain(double max_slope_deg = 11.0,
-                                                     std::uint64_t seed = 2005,
-                                                     double min_wavelength = 0.5,
-                                                     double max_wavelength = 2.0,
-                                                     double length = 120.0,
-                                                     double flat_until = 1.0) {
+inline gaitsynth::height_field_terrain bumpy_terrain(
+    double max_slope_deg = 11.0, std::uint64_t seed = 2005, double min_wavelength = 0.5,
+    double max_wavelength = 2.0, double length = 120.0, double flat_until = 1.0) {
   const double spacing = 0.05, x0 = -5.0;
   const int n = static_cast<int>(std::ceil(length / spacing)) + 1;
   std::mt19937_64 rng(seed);
@@ -48,7 +45,8 @@ inline gaitsynth::height_field_terrain bumpy_terrain(double max_slope_deg = 11.0
   for (int i = 0; i < n; ++i) {
     const double x = x0 + spacing * i;
     double y = 0.0;
-    for (int k = 0; k < waves; ++k) y += amp[k] * std::sin(2.0 * std::numbers::pi * x / lambda[k] + phase[k]);
+    for (int k = 0; k < waves; ++k)
+      y += amp[k] * std::sin(2.0 * std::numbers::pi * x / lambda[k] + phase[k]);
     const double blend = std::clamp(x - flat_until, 0.0, 1.0);
     h(i, 0) = blend * blend * (3.0 - 2.0 * blend) * y;  // smoothstep from flat ground
   }
@@ -89,7 +87,7 @@ inline std::vector<gaitsynth::sharon2005_human7_parameters> training_bodies(int 
       p.shin_length = shin[(k >> 2) & 1];
     } else {
       std::mt19937_64 rng(static_cast<std::uint64_t>(1001 + k - 8));
-      auto uniform = [&](const double (&r)[2]) {
+      auto uniform = [&](const double(&r)[2]) {
         return r[0] + (r[1] - r[0]) * static_cast<double>(rng() >> 11) * 0x1.0p-53;
       };
       p.torso_mass = uniform(torso);
@@ -138,8 +136,9 @@ inline std::vector<body_variant> figure8_bodies() {
 /// The start state for a changed body: the target's first pose and velocity (joint angles and
 /// rates as keyframed), with the root lowered or raised so that the lowest foot point touches the
 /// ground, as for the original body.
-inline gaitsynth::sim_state start_state_for(const gaitsynth::planar_model& m,
-                                            const gaitsynth::keyframe_motion<gaitsynth::planar_root>& target) {
+inline gaitsynth::sim_state start_state_for(
+    const gaitsynth::planar_model& m,
+    const gaitsynth::keyframe_motion<gaitsynth::planar_root>& target) {
   gaitsynth::sim_state s = target.initial_state();
   auto ws = gaitsynth::make_workspace(m);
   gaitsynth::forward_kinematics(m, ws, s.q);

@@ -26,13 +26,14 @@ int main(int argc, char** argv) try {
   rollout_options ro;
   ro.initial_state = target.initial_state();
   const slope_terrain hill(10.0 * std::numbers::pi / 180.0);
-  nn_problem prob{m, torque_actuator{}, c0, mass_distance<planar_root>(m, target, sharon_example::style_options(c)), hill,
-                        semi_implicit_euler{}, ro};
+  nn_problem prob{m,    torque_actuator{},
+                  c0,   mass_distance<planar_root>(m, target, sharon_example::style_options(c)),
+                  hill, semi_implicit_euler{},
+                  ro};
   sharon_example::set_starts(prob, c);
-  return sharon_example::synthesize_and_report("sharon2005_uphill", prob,
-                                               sharon_example::synthesis_defaults(), c,
-                                               {{"keyframes", kf_path}, {"figure", "7a"},
-                                                {"slope_degrees", 10.0}});
+  return sharon_example::synthesize_and_report(
+      "sharon2005_uphill", prob, sharon_example::synthesis_defaults(), c,
+      {{"keyframes", kf_path}, {"figure", "7a"}, {"slope_degrees", 10.0}});
 } catch (const std::exception& e) {
   std::cerr << "error: " << e.what() << "\n";
   return 1;

@@ -621,12 +621,23 @@ TEST_CASE("the objective sees which body's toe top touches", "[rollout][objectiv
   model_builder<floating_root> b("foot_and_toe");
   const Eigen::Matrix3d I = Eigen::Vector3d(0.01, 0.01, 0.01).asDiagonal();
   b.add_body({.name = "foot", .mass = 1.0, .inertia = I});
-  b.add_body({.name = "toe", .parent = "foot", .joint_offset = {0.1, 0, -0.03}, .mass = 0.2,
-              .com = {0.03, 0, 0}, .inertia = 0.1 * I, .dofs = {{.name = "toe_y", .axis = {0, 1, 0}}}});
-  for (double x : {-0.1, 0.1}) b.add_contact_point({.name = "heel" + std::to_string(x > 0), .body = "foot", .position = {x, 0, -0.03}});
-  b.add_contact_point({.name = "toe_bottom", .body = "toe", .position = {0.06, 0, 0},
+  b.add_body({.name = "toe",
+              .parent = "foot",
+              .joint_offset = {0.1, 0, -0.03},
+              .mass = 0.2,
+              .com = {0.03, 0, 0},
+              .inertia = 0.1 * I,
+              .dofs = {{.name = "toe_y", .axis = {0, 1, 0}}}});
+  for (double x : {-0.1, 0.1})
+    b.add_contact_point(
+        {.name = "heel" + std::to_string(x > 0), .body = "foot", .position = {x, 0, -0.03}});
+  b.add_contact_point({.name = "toe_bottom",
+                       .body = "toe",
+                       .position = {0.06, 0, 0},
                        .role = contact_point::kind::toe});
-  b.add_contact_point({.name = "toe_top", .body = "toe", .position = {0.06, 0, 0.03},
+  b.add_contact_point({.name = "toe_top",
+                       .body = "toe",
+                       .position = {0.06, 0, 0.03},
                        .role = contact_point::kind::toe_top});
   const floating_model m = b.build();
   auto scr = make_rollout_scratch(m);
@@ -656,7 +667,8 @@ TEST_CASE("the objective sees which body's toe top touches", "[rollout][objectiv
     double lowest = 1e9;
     int lowest_point = -1;
     for (int k = 0; k < static_cast<int>(m.contact_points.size()); ++k) {
-      const double z = point_position(m, ws, m.contact_points[k].body, m.contact_points[k].position).z();
+      const double z =
+          point_position(m, ws, m.contact_points[k].body, m.contact_points[k].position).z();
       if (z < lowest) lowest = z, lowest_point = k;
     }
     REQUIRE(m.contact_points[lowest_point].role == contact_point::kind::toe_top);

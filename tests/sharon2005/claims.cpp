@@ -9,9 +9,9 @@
 #include <catch2/catch.hpp>
 
 #include <cmath>
+#include <cstdint>
 #include <filesystem>
 #include <numbers>
-#include <cstdint>
 #include <string>
 
 #include "../../examples/sharon2005_scenarios.hpp"
@@ -49,23 +49,26 @@ walk_check walk_70s(const planar_model& m, const std::string& controller_file,
   const auto ctrl = load_nearest_neighbor(cm, data(controller_file));
   rollout_options ro;
   ro.initial_state = place ? sharon_scenarios::start_state_for(m, target) : target.initial_state();
-  const nn_problem prob{m, torque_actuator{}, ctrl, mass_distance<planar_root>(m, target),
+  const nn_problem prob{m,      torque_actuator{},     ctrl, mass_distance<planar_root>(m, target),
                         ground, semi_implicit_euler{}, ro};
   return check_walk(prob, params_of(ctrl), 70.0);
 }
 
-bool walks(const walk_check& w) { return !w.fell && w.seconds >= 70.0 - 1e-9 && w.average_speed > 0.3; }
+bool walks(const walk_check& w) {
+  return !w.fell && w.seconds >= 70.0 - 1e-9 && w.average_speed > 0.3;
+}
 
-#define REPORT(w)                                                                            \
-  INFO("walked " << (w).seconds << " s, " << (w).distance << " m, " << (w).average_speed \
-                 << " m/s" << ((w).fell ? " (fell)" : ""))
+#define REPORT(w)                                                                                  \
+  INFO("walked " << (w).seconds << " s, " << (w).distance << " m, " << (w).average_speed << " m/s" \
+                 << ((w).fell ? " (fell)" : ""))
 
 }  // namespace
 
-TEST_CASE("Fig. 5a/b: the normal-walk controller walks 70 s without falling", "[sharon2005][claims]") {
+TEST_CASE("Fig. 5a/b: the normal-walk controller walks 70 s without falling",
+          "[sharon2005][claims]") {
   const planar_model m = sharon2005_human7();
-  const walk_check w = walk_70s(m, "normal_walk.controller.json", "normal_walk.keyframes.json",
-                                flat_terrain{});
+  const walk_check w =
+      walk_70s(m, "normal_walk.controller.json", "normal_walk.keyframes.json", flat_terrain{});
   REPORT(w);
   CHECK(walks(w));
   WARN("normal walk: " << w.seconds << " s, " << w.average_speed << " m/s");
@@ -78,8 +81,13 @@ TEST_CASE("Fig. 5a/b: the normal walk follows the keyframed style (mass-distance
   const auto ctrl = load_nearest_neighbor(m, data("normal_walk.controller.json"));
   rollout_options ro;
   ro.initial_state = target.initial_state();
-  const nn_problem prob{m, torque_actuator{}, ctrl, mass_distance<planar_root>(m, target),
-                        flat_terrain{}, semi_implicit_euler{}, ro};
+  const nn_problem prob{m,
+                        torque_actuator{},
+                        ctrl,
+                        mass_distance<planar_root>(m, target),
+                        flat_terrain{},
+                        semi_implicit_euler{},
+                        ro};
   trajectory tr;
   const rollout_result r = prob.evaluate(params_of(ctrl), 70.0, &tr, 48);  // 50 frames/s
   REQUIRE(r.reason == stop_reason::horizon);
@@ -100,7 +108,8 @@ TEST_CASE("Fig. 5a/b: the normal walk follows the keyframed style (mass-distance
   }
   REQUIRE(per_cycle.size() == 63);
   double mean = 0.0, worst = 0.0;
-  for (double d : per_cycle) mean += d / static_cast<double>(per_cycle.size()), worst = std::max(worst, d);
+  for (double d : per_cycle)
+    mean += d / static_cast<double>(per_cycle.size()), worst = std::max(worst, d);
   // Scale: the same metric between the target and itself half a cycle later (the left and right
   // legs swapped: the style on the wrong foot), averaged over a cycle.
   const auto pts = link_end_points(m);
@@ -115,11 +124,15 @@ TEST_CASE("Fig. 5a/b: the normal walk follows the keyframed style (mass-distance
     forward_kinematics(m, wa, qa);
     forward_kinematics(m, wb, qb);
     wrong_step += mass_distance_error(pts, wa.body_rotation, wa.body_position, wb.body_rotation,
-                                      wb.body_position) / n;
+                                      wb.body_position) /
+                  n;
   }
-  WARN("normal walk style (kg m^2): first cycle " << first << " (eq. 2 as optimized); per cycle "
-       "over 70 s with phase and progression aligned: mean " << mean << ", worst " << worst
-       << " (phase drift at the end " << drift << " s); the wrong step scores " << wrong_step);
+  WARN("normal walk style (kg m^2): first cycle "
+       << first
+       << " (eq. 2 as optimized); per cycle "
+          "over 70 s with phase and progression aligned: mean "
+       << mean << ", worst " << worst << " (phase drift at the end " << drift
+       << " s); the wrong step scores " << wrong_step);
   // The walk keeps the keyframed shape in every one of its 63 cycles: far closer to the target
   // than the target is to itself on the wrong foot.
   CHECK(worst < 0.25 * wrong_step);
@@ -128,8 +141,8 @@ TEST_CASE("Fig. 5a/b: the normal walk follows the keyframed style (mass-distance
 
 TEST_CASE("Fig. 5c/d: the 16-link human walks 70 s", "[sharon2005][claims]") {
   const planar_model m = sharon2005_human16();
-  const walk_check w = walk_70s(m, "human16_walk.controller.json", "human16_walk.keyframes.json",
-                                flat_terrain{});
+  const walk_check w =
+      walk_70s(m, "human16_walk.controller.json", "human16_walk.keyframes.json", flat_terrain{});
   REPORT(w);
   CHECK(walks(w));
 }
@@ -154,7 +167,8 @@ TEST_CASE("Fig. 6c/d: the back-swing style (24 nodes, ordered activation) walks 
   CHECK(walks(w));
 }
 
-TEST_CASE("Fig. 7: the uphill controller walks up a 10 degree slope for 70 s", "[sharon2005][claims]") {
+TEST_CASE("Fig. 7: the uphill controller walks up a 10 degree slope for 70 s",
+          "[sharon2005][claims]") {
   const planar_model m = sharon2005_human7();
   const slope_terrain hill(10.0 * std::numbers::pi / 180.0);
   const walk_check w = walk_70s(m, "uphill.controller.json", "uphill.keyframes.json", hill);
@@ -228,6 +242,6 @@ TEST_CASE("Fig. 8d is not one lucky profile: other seeds of the same terrain gen
     log += " " + std::to_string(static_cast<int>(w.seconds));
   }
   WARN("Fig. 8d, ten other 11 degree profiles: walked " << walked << " of 10 (seconds:" << log
-                                                         << ")");
+                                                        << ")");
   CHECK(walked >= 8);
 }

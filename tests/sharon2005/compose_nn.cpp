@@ -7,8 +7,8 @@
 
 #include <cmath>
 #include <numbers>
-#include <vector>
 #include <tuple>
+#include <vector>
 
 #include "gaitsynth/actuators/pd.hpp"
 #include "gaitsynth/actuators/torque.hpp"
@@ -93,14 +93,14 @@ struct combination {
 
 template <class... Ts>
 using L = std::tuple<Ts...>;
-#define GS_COMBOS(CH)                                                                           \
-  combination<CH, pd_actuator, nn_tag, mass_distance_tag>,                                     \
-      combination<CH, pd_actuator, nn_tag, distance_tag>,                                       \
-      combination<CH, pd_actuator, pose_hold_tag, mass_distance_tag>,                           \
-      combination<CH, pd_actuator, pose_hold_tag, distance_tag>,                                \
-      combination<CH, torque_actuator, nn_tag, mass_distance_tag>,                              \
-      combination<CH, torque_actuator, nn_tag, distance_tag>,                                   \
-      combination<CH, torque_actuator, pose_hold_tag, mass_distance_tag>,                       \
+#define GS_COMBOS(CH)                                                     \
+  combination<CH, pd_actuator, nn_tag, mass_distance_tag>,                \
+      combination<CH, pd_actuator, nn_tag, distance_tag>,                 \
+      combination<CH, pd_actuator, pose_hold_tag, mass_distance_tag>,     \
+      combination<CH, pd_actuator, pose_hold_tag, distance_tag>,          \
+      combination<CH, torque_actuator, nn_tag, mass_distance_tag>,        \
+      combination<CH, torque_actuator, nn_tag, distance_tag>,             \
+      combination<CH, torque_actuator, pose_hold_tag, mass_distance_tag>, \
       combination<CH, torque_actuator, pose_hold_tag, distance_tag>
 using all_combinations = L<GS_COMBOS(human7), GS_COMBOS(human16), GS_COMBOS(humanoid3d)>;
 #undef GS_COMBOS
@@ -126,8 +126,8 @@ struct make_actuator<torque_actuator> {
 // The NN controller's servo gains are the standing PD gains, in both modes (with pd_actuator they
 // must equal the actuator's for the torso servo's equivalent target).
 template <class Character, class M, class A>
-nearest_neighbor_controller<typename Character::root> make_nn(const M& m, const A& act,
-                                                              const keyframe_motion<typename Character::root>& target) {
+nearest_neighbor_controller<typename Character::root> make_nn(
+    const M& m, const A& act, const keyframe_motion<typename Character::root>& target) {
   nearest_neighbor_options o = Character::nn();
   const pd_actuator g = test_e2::standing_pd(m, dt);
   o.kp.assign(g.kp.data(), g.kp.data() + g.kp.size());
@@ -156,9 +156,10 @@ rollout_result run_one(const M& m, const A& act, Ctrl ctrl, const Obj& obj,
 
 }  // namespace
 
-TEMPLATE_LIST_TEST_CASE("nearest-neighbor controller and mass-distance objective compose with "
-                        "every character and actuator",
-                        "[sharon2005][compose]", all_combinations) {
+TEMPLATE_LIST_TEST_CASE(
+    "nearest-neighbor controller and mass-distance objective compose with "
+    "every character and actuator",
+    "[sharon2005][compose]", all_combinations) {
   using C = TestType;
   using Root = typename C::character::root;
   const auto m = C::character::build();
@@ -198,13 +199,18 @@ TEMPLATE_LIST_TEST_CASE("nearest-neighbor controller and mass-distance objective
 TEST_CASE("mass-distance objective inside CMA-ES (nearest-neighbor controller, 7-link human)",
           "[sharon2005][compose][cmaes]") {
   const planar_model m = sharon2005_human7();
-  const auto target =
-      load_keyframes(m, std::string(GAITSYNTH_SOURCE_DIR) + "/data/sharon2005/normal_walk.keyframes.json");
+  const auto target = load_keyframes(
+      m, std::string(GAITSYNTH_SOURCE_DIR) + "/data/sharon2005/normal_walk.keyframes.json");
   rollout_options ro;
   ro.initial_state = target.initial_state();
   const nearest_neighbor_controller<planar_root> c0(m, target, {});
-  const nn_problem prob{m, torque_actuator{}, c0, mass_distance<planar_root>(m, target),
-                        flat_terrain{}, semi_implicit_euler{}, ro};
+  const nn_problem prob{m,
+                        torque_actuator{},
+                        c0,
+                        mass_distance<planar_root>(m, target),
+                        flat_terrain{},
+                        semi_implicit_euler{},
+                        ro};
   const Eigen::VectorXd x0 = prob.initial_parameters();
   REQUIRE(x0.size() == 72);
   const double f0 = prob.cost(x0, 0.2);
@@ -218,8 +224,8 @@ TEST_CASE("mass-distance objective inside CMA-ES (nearest-neighbor controller, 7
   co.stop.max_iterations = 2;
   cmaes es(space, co);
   thread_pool_evaluator pool(2);
-  const optimization_result r =
-      minimize(es, [&](const Eigen::VectorXd& x) { return prob.cost(x, 0.2); }, pool);
+  const optimization_result r = minimize(
+      es, [&](const Eigen::VectorXd& x) { return prob.cost(x, 0.2); }, pool);
   CHECK(r.iterations == 2);
   CHECK(r.evaluations == 2 * (4 + static_cast<int>(std::floor(3 * std::log(72.0)))));
   CHECK(r.non_finite == 0);
@@ -237,17 +243,22 @@ TEST_CASE("a problem with variants adds the variants' costs, on other terrain ty
   rollout_options ro;
   ro.initial_state = target.initial_state();
   const nearest_neighbor_controller<planar_root> c0(m, target, {});
-  const nn_problem flat{m, torque_actuator{}, c0, mass_distance<planar_root>(m, target),
-                        flat_terrain{}, semi_implicit_euler{}, ro};
+  const nn_problem flat{m,
+                        torque_actuator{},
+                        c0,
+                        mass_distance<planar_root>(m, target),
+                        flat_terrain{},
+                        semi_implicit_euler{},
+                        ro};
   // Variants: the same controller on a 5 degree slope, and on flat ground from a faster start.
   const slope_terrain hill(5.0 * std::numbers::pi / 180.0);
   rollout_options rh = ro;
   rh.initial_state = target_start_states(m, target, hill, {0.0}).front();
   using hill_problem = nn_problem<planar_root, torque_actuator, mass_distance<planar_root>,
                                   slope_terrain, semi_implicit_euler>;
-  std::vector<hill_problem> variants{
-      hill_problem{m, torque_actuator{}, c0, mass_distance<planar_root>(m, target), hill,
-                   semi_implicit_euler{}, rh}};
+  std::vector<hill_problem> variants{hill_problem{m, torque_actuator{}, c0,
+                                                  mass_distance<planar_root>(m, target), hill,
+                                                  semi_implicit_euler{}, rh}};
   const auto combined = make_problem_with_variants(flat, variants, 0.5);
   const Eigen::VectorXd x = flat.initial_parameters();
   const double c_flat = flat.cost(x, 0.3), c_hill = variants[0].cost(x, 0.3);
@@ -263,9 +274,9 @@ TEST_CASE("a problem with variants adds the variants' costs, on other terrain ty
                     Catch::Contains("variant_weight") && Catch::Contains("-1"));
   nearest_neighbor_options o24;
   o24.num_nodes = 24;
-  std::vector<hill_problem> wrong{hill_problem{m, torque_actuator{}, nearest_neighbor_controller<planar_root>(m, target, o24),
-                                               mass_distance<planar_root>(m, target), hill,
-                                               semi_implicit_euler{}, rh}};
+  std::vector<hill_problem> wrong{
+      hill_problem{m, torque_actuator{}, nearest_neighbor_controller<planar_root>(m, target, o24),
+                   mass_distance<planar_root>(m, target), hill, semi_implicit_euler{}, rh}};
   CHECK_THROWS_WITH(make_problem_with_variants(flat, wrong),
                     Catch::Contains("144") && Catch::Contains("72"));
 }

@@ -34,8 +34,8 @@
 #include <vector>
 
 #include "gaitsynth/contact/height_field_terrain.hpp"
-#include "gaitsynth/detail/uniform01.hpp"
 #include "gaitsynth/contact/terrain.hpp"
+#include "gaitsynth/detail/uniform01.hpp"
 #include "gaitsynth/error.hpp"
 
 namespace gaitsynth {

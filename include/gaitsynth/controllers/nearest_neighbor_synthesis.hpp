@@ -19,10 +19,10 @@
 #include <chrono>
 #include <cmath>
 #include <cstdint>
-#include <limits>
-#include <type_traits>
 #include <iostream>
+#include <limits>
 #include <string>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -168,12 +168,12 @@ struct nn_synthesis_options {
 };
 
 struct nn_synthesis_result {
-  Eigen::VectorXd x;                ///< optimized parameters
-  double value = 0.0;               ///< cost of x on the last episode
-  continuation_result episodes;     ///< one optimization_result per episode
-  std::vector<double> horizons;     ///< T_sim of each episode, s
-  std::int64_t evaluations = 0;     ///< cost function evaluations over all episodes
-  double wall_seconds = 0.0;        ///< wall time of the whole synthesis
+  Eigen::VectorXd x;             ///< optimized parameters
+  double value = 0.0;            ///< cost of x on the last episode
+  continuation_result episodes;  ///< one optimization_result per episode
+  std::vector<double> horizons;  ///< T_sim of each episode, s
+  std::int64_t evaluations = 0;  ///< cost function evaluations over all episodes
+  double wall_seconds = 0.0;     ///< wall time of the whole synthesis
 };
 
 /// The default bootstrapping schedule: 0.2, 0.4, ..., 2.0 s.
@@ -222,8 +222,7 @@ nn_synthesis_result synthesize_nearest_neighbor(const Problem& prob, nn_synthesi
         return [&prob, T](const Eigen::VectorXd& x) { return prob.cost(x, T); };
       },
       pool, o.run);
-  res.wall_seconds =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  res.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   res.x = res.episodes.x;
   res.value = res.episodes.value;
   for (const auto& s : res.episodes.stages) res.evaluations += s.evaluations;
@@ -234,8 +233,10 @@ nn_synthesis_result synthesize_nearest_neighbor(const Problem& prob, nn_synthesi
 /// s.t = time so the objective compares against the target from there on), each lowered or raised
 /// so that its lowest contact point touches the terrain.
 template <root_joint Root, terrain Terrain>
-std::vector<sim_state> target_start_states(const model<Root>& m, const keyframe_motion<Root>& target,
-                                           const Terrain& ground, const std::vector<double>& times) {
+std::vector<sim_state> target_start_states(const model<Root>& m,
+                                           const keyframe_motion<Root>& target,
+                                           const Terrain& ground,
+                                           const std::vector<double>& times) {
   std::vector<sim_state> out;
   auto ws = make_workspace(m);
   for (double t : times) {
@@ -283,11 +284,11 @@ std::vector<sim_state> perturbed_starts(const model<Root>&, const sim_state& s,
 
 /// How a controller fares in a long test rollout (the paper's 70 s test).
 struct walk_check {
-  double seconds = 0.0;       ///< simulated time before the end or a fall, s
-  bool fell = false;          ///< stopped by a fall (or divergence)
-  double distance = 0.0;      ///< COM displacement along x, m
-  double average_speed = 0.0; ///< distance / seconds, m/s
-  double cost = 0.0;          ///< objective value of the whole rollout
+  double seconds = 0.0;        ///< simulated time before the end or a fall, s
+  bool fell = false;           ///< stopped by a fall (or divergence)
+  double distance = 0.0;       ///< COM displacement along x, m
+  double average_speed = 0.0;  ///< distance / seconds, m/s
+  double cost = 0.0;           ///< objective value of the whole rollout
   rollout_result result;
 };
 

@@ -57,9 +57,9 @@ struct step_view {
   std::span<const unsigned char> contact_active;  ///< per contact point
   std::span<const vec3> contact_force;            ///< per contact point, world, N
   std::span<const std::uint8_t> toe_top_touching;  ///< per body: 1 if its toe-top point touches
-  bool toe_top_contact = false;                   ///< the top of some toe touches (a stumble)
-  vec3 com = vec3::Zero();                        ///< world, m
-  vec3 com_velocity = vec3::Zero();               ///< world, m/s
+  bool toe_top_contact = false;                    ///< the top of some toe touches (a stumble)
+  vec3 com = vec3::Zero();                         ///< world, m
+  vec3 com_velocity = vec3::Zero();                ///< world, m/s
 
   const gaitsynth::model<Root>& model() const { return *model_ptr; }
   const Eigen::VectorXd& q() const { return *q_ptr; }

@@ -29,9 +29,9 @@
 #include <array>
 #include <cmath>
 #include <limits>
-#include <utility>
 #include <span>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 #include "gaitsynth/controllers/keyframes.hpp"
@@ -210,8 +210,8 @@ std::pair<double, double> phase_aligned_style_error(const model<Root>& m,
   std::vector<const trajectory_frame*> frames;
   for (const auto& f : tr.frames)
     if (f.t >= t0 && f.t < t1) frames.push_back(&f);
-  check_argument(!frames.empty(), "phase_aligned_style_error: no recorded frame in [", t0, ", ",
-                 t1, ")");
+  check_argument(!frames.empty(), "phase_aligned_style_error: no recorded frame in [", t0, ", ", t1,
+                 ")");
   for (const auto* f : frames)
     check_argument(static_cast<int>(f->body_position.size()) == m.num_bodies() &&
                        static_cast<int>(f->body_orientation.size()) == m.num_bodies(),
