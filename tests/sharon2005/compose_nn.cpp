@@ -217,7 +217,8 @@ TEST_CASE("mass-distance objective inside CMA-ES (nearest-neighbor controller, 7
   REQUIRE(std::isfinite(f0));
   parameter_space space;
   for (Eigen::Index i = 0; i < x0.size(); ++i)
-    space.add({"p" + std::to_string(i), x0[i] - 1.0, x0[i] + 1.0, x0[i], 1.0});
+    space.add({std::string("p").append(std::to_string(i)),  // not "p" + ...: GCC 12 -Wrestrict
+               x0[i] - 1.0, x0[i] + 1.0, x0[i], 1.0});      // false positive (PR 105329)
   cmaes_options co;
   co.sigma0 = 0.02;
   co.seed = 5;
