@@ -237,8 +237,7 @@ std::size_t rollouts_per_evaluation(const Problem& prob) {
   std::size_t n = prob.starts.empty() ? 1 : prob.starts.size();
   if constexpr (requires { prob.variants; }) {
     // The main problem of a problem with variants may have variants itself.
-    n = rollouts_per_evaluation(
-        static_cast<const std::decay_t<decltype(prob.main())>&>(prob.main()));
+    n = rollouts_per_evaluation(prob.main());
     for (const auto& v : prob.variants) n += rollouts_per_evaluation(v);
   }
   return n;
