@@ -40,6 +40,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <type_traits>
 #include <vector>
 
 #include "gaitsynth/contact/terrain.hpp"
@@ -170,6 +171,149 @@ scaled_inverse_effective_mass(double inv_mass, const mat3& inv_inertia_world, co
 inline double implicit_damping(double c, int n, double dt, double inv_m_eff) {
   return c / (1.0 + n * c * dt * inv_m_eff);
 }
+
+/// Zeroes the per-body and total counts (start of pass 1).
+inline void reset_counts(contact_state& s) {
+  std::fill(s.points_touching.begin(), s.points_touching.end(), 0);
+  std::fill(s.toe_top_touching.begin(), s.toe_top_touching.end(), std::uint8_t{0});
+  s.total_points_touching = 0;
+  s.any_toe_top_touching = false;
+}
+
+/// Pass 1 for point k at world position pw: depth and normal against terrain t, and the counts.
+template <terrain T>
+inline void record_point(const contact_point& cp, int k, const vec3& pw, const T& t,
+                         contact_state& s) {
+  s.position[k] = pw;
+  const surface_contact c = terrain_penetration(t, pw);
+  s.depth[k] = c.depth;
+  s.normal[k] = c.normal;
+  if (c.depth > 0.0) {
+    ++s.points_touching[cp.body];
+    ++s.total_points_touching;
+    if (cp.role == contact_point::kind::toe_top) {
+      s.toe_top_touching[cp.body] = 1;
+      s.any_toe_top_touching = true;
+    }
+  }
+}
+
+/// A point that does not touch: no force, and its anchor is forgotten.
+inline void release_point(contact_state& s, int k) {
+  s.active[k] = 0;
+  s.sliding[k] = 0;
+  s.normal_force[k] = 0.0;
+  s.force[k].setZero();
+}
+
+/// The force of touching point k (depth d > 0) from its kinematics and damping coefficients:
+/// normal force, friction anchor and Coulomb cone (file comment); stores it in `s` and adds it to
+/// the body's external wrench `f_ext` (the lever rb is from the body origin). Shared by the
+/// general and the planar path, so both round alike.
+#if defined(__GNUC__)
+__attribute__((always_inline))  // once per touching point: a call costs more than it
+#endif
+inline void
+apply_point_force(const contact_parameters& p, contact_state& s, vec6& f_ext, int k, const vec3& pw,
+                  const vec3& rb, const vec3& n, double d, double vn, const vec3& vt, double kd,
+                  double bt) {
+  const double fn = std::max(0.0, p.kp * d - kd * vn);
+
+  if (!s.active[k]) s.anchor[k] = pw;  // first touch
+  s.active[k] = 1;
+  const vec3 disp = pw - s.anchor[k];
+  const vec3 disp_t = disp - n.dot(disp) * n;
+  vec3 ft = -p.kt * disp_t - bt * vt;
+  const double limit = p.mu * fn;
+  // |ft| > limit compared squared (limit >= 0): the square root stays off the sticking path.
+  const double ft2 = ft.squaredNorm();
+  s.sliding[k] = 0;
+  if (ft2 > limit * limit) {
+    // Sliding: kinetic friction mu f_n against the would-be sticking force; the anchor follows so
+    // that its spring alone is on the cone (and sticking resumes once the pull drops inside).
+    const double ft_norm = std::sqrt(ft2);
+    ft = ft_norm > 0.0 ? vec3(ft * (limit / ft_norm)) : vec3::Zero();
+    s.anchor[k] = pw + ft / p.kt;
+    s.sliding[k] = 1;
+  }
+  const vec3 f = fn * n + ft;
+  s.normal_force[k] = fn;
+  s.force[k] = f;
+  f_ext.template head<3>() += rb.cross(f);
+  f_ext.template tail<3>() += f;
+}
+
+/// |u|^2 / m_eff(u) for the planar path: with r, u in the x-z plane (r_y = u_y = 0), r x u is
+/// (0, r_z u_x - r_x u_z, 0), so only the y-y entry of the world inverse inertia matters, and
+/// under a rotation about y that entry is the body-frame I^-1_yy. Every term dropped here is an
+/// exact zero in scaled_inverse_effective_mass, so both give the same double.
+inline double scaled_inverse_effective_mass_planar(double inv_mass, double inv_inertia_yy,
+                                                   const vec3& r, const vec3& u) {
+  const double ru = r.z() * u.x() - r.x() * u.z();
+  return inv_mass * u.squaredNorm() + ru * (inv_inertia_yy * ru);
+}
+
+/// apply_contact_forces for models on the planar fast path (every body frame a rotation about y,
+/// R = [c 0 s; 0 1 0; -s 0 c]): the 3x3 products of the general path are written out on the
+/// entries that are not structurally zero, and the effective masses use the y-y inverse inertia.
+/// The structural zeros enter the general path only as exact zero terms, so this path returns the
+/// same doubles (tests/contact/planar_contact.cpp compares them); a point whose lever or normal
+/// leaves the x-z plane (a height field sloping across y) takes the general formula.
+template <terrain T>
+void apply_contact_forces_planar(const model<planar_root>& m, workspace<planar_root>& ws,
+                                 const T& t, const contact_parameters& p, contact_state& s,
+                                 double dt) {
+  const int np = static_cast<int>(m.contact_points.size());
+  // R p for a body-frame vector p, from R's four in-plane entries.
+  auto rotate = [&](int b, const vec3& x) {
+    const mat3& R = ws.body_rotation[b];
+    return vec3(R(0, 0) * x.x() + R(0, 2) * x.z(), x.y(), R(2, 0) * x.x() + R(2, 2) * x.z());
+  };
+  reset_counts(s);
+  for (int k = 0; k < np; ++k) {
+    const contact_point& cp = m.contact_points[k];
+    record_point(cp, k, vec3(ws.body_position[cp.body] + rotate(cp.body, cp.position)), t, s);
+  }
+  for (int b = 0; b < s.num_bodies(); ++b)
+    if (s.points_touching[b] > 0) s.com_offset_world[b] = rotate(b, m.bodies[b].com);
+
+  for (int k = 0; k < np; ++k) {
+    const contact_point& cp = m.contact_points[k];
+    const double d = s.depth[k];
+    if (!(d > 0.0)) {
+      release_point(s, k);
+      continue;
+    }
+    const int b = cp.body;
+    const vec3& pw = s.position[k];
+    const vec3 rb = pw - ws.body_position[b];
+    const vec3 vw = ws.body_linear_velocity[b] + ws.body_angular_velocity[b].cross(rb);
+    const vec3& n = s.normal[k];
+    const double vn = n.dot(vw);
+    const vec3 vt = vw - vn * n;
+    const int nb = s.points_touching[b];
+    const vec3 r = rb - s.com_offset_world[b];
+
+    double kd = p.kd, bt = p.bt;
+    if (p.implicit_damping) {
+      const double vt2 = vt.squaredNorm();
+      double inv_n = 0.0, inv_t = 0.0;
+      if (r.y() == 0.0 && n.y() == 0.0 && vt.y() == 0.0) {
+        const double Iyy = s.inv_inertia[b](1, 1);
+        inv_n = scaled_inverse_effective_mass_planar(s.inv_mass[b], Iyy, r, n);
+        if (vt2 > 0.0) inv_t = scaled_inverse_effective_mass_planar(s.inv_mass[b], Iyy, r, vt);
+      } else {
+        const mat3& R = ws.body_rotation[b];
+        const mat3 Iinv = R * s.inv_inertia[b] * R.transpose();
+        inv_n = scaled_inverse_effective_mass(s.inv_mass[b], Iinv, r, n);
+        if (vt2 > 0.0) inv_t = scaled_inverse_effective_mass(s.inv_mass[b], Iinv, r, vt);
+      }
+      kd = implicit_damping(p.kd, nb, dt, inv_n);
+      if (vt2 > 0.0) bt = p.bt * vt2 / (vt2 + nb * p.bt * dt * inv_t);
+    }
+    apply_point_force(p, s, ws.f_ext[b], k, pw, rb, n, d, vn, vt, kd, bt);
+  }
+}
 }  // namespace detail
 
 /// Computes the penalty contact force at every contact point of `m` against terrain `t`, adds them
@@ -186,28 +330,19 @@ void apply_contact_forces(const model<Root>& m, workspace<Root>& ws, const T& t,
                  s.num_points(), " points and ", s.num_bodies(), " bodies, but model '", m.name,
                  "' has ", np, " and ", m.num_bodies(), " (use make_contact_state(model))");
   check_positive(dt, "dt (time step, s)");
+  if constexpr (std::is_same_v<Root, planar_root>) {
+    if (ws.scratch.planar.enabled) {
+      detail::apply_contact_forces_planar(m, ws, t, p, s, dt);
+      return;
+    }
+  }
 
   // Pass 1: depths, normals and counts (the implicit damping shares each body among its touching
   // points, so counts come first).
-  std::fill(s.points_touching.begin(), s.points_touching.end(), 0);
-  std::fill(s.toe_top_touching.begin(), s.toe_top_touching.end(), std::uint8_t{0});
-  s.total_points_touching = 0;
-  s.any_toe_top_touching = false;
+  detail::reset_counts(s);
   for (int k = 0; k < np; ++k) {
     const contact_point& cp = m.contact_points[k];
-    const vec3 pw = point_position(m, ws, cp.body, cp.position);
-    s.position[k] = pw;
-    const surface_contact c = terrain_penetration(t, pw);
-    s.depth[k] = c.depth;
-    s.normal[k] = c.normal;
-    if (c.depth > 0.0) {
-      ++s.points_touching[cp.body];
-      ++s.total_points_touching;
-      if (cp.role == contact_point::kind::toe_top) {
-        s.toe_top_touching[cp.body] = 1;
-        s.any_toe_top_touching = true;
-      }
-    }
+    detail::record_point(cp, k, point_position(m, ws, cp.body, cp.position), t, s);
   }
 
   for (int b = 0; b < s.num_bodies(); ++b)
@@ -223,10 +358,7 @@ void apply_contact_forces(const model<Root>& m, workspace<Root>& ws, const T& t,
     const contact_point& cp = m.contact_points[k];
     const double d = s.depth[k];
     if (!(d > 0.0)) {
-      s.active[k] = 0;
-      s.sliding[k] = 0;
-      s.normal_force[k] = 0.0;
-      s.force[k].setZero();
+      detail::release_point(s, k);
       continue;
     }
     const int b = cp.body;
@@ -251,31 +383,7 @@ void apply_contact_forces(const model<Root>& m, workspace<Root>& ws, const T& t,
              (vt2 +
               nb * p.bt * dt * detail::scaled_inverse_effective_mass(s.inv_mass[b], Iinv, r, vt));
     }
-    const double fn = std::max(0.0, p.kp * d - kd * vn);
-
-    if (!s.active[k]) s.anchor[k] = pw;  // first touch
-    s.active[k] = 1;
-    const vec3 disp = pw - s.anchor[k];
-    const vec3 disp_t = disp - n.dot(disp) * n;
-    vec3 ft = -p.kt * disp_t - bt * vt;
-    const double limit = p.mu * fn;
-    // |ft| > limit compared squared (limit >= 0): the square root stays off the sticking path.
-    const double ft2 = ft.squaredNorm();
-    s.sliding[k] = 0;
-    if (ft2 > limit * limit) {
-      // Sliding: kinetic friction mu f_n against the would-be sticking force; the anchor follows so
-      // that its spring alone is on the cone (and sticking resumes once the pull drops inside).
-      const double ft_norm = std::sqrt(ft2);
-      ft = ft_norm > 0.0 ? vec3(ft * (limit / ft_norm)) : vec3::Zero();
-      s.anchor[k] = pw + ft / p.kt;
-      s.sliding[k] = 1;
-    }
-    const vec3 f = fn * n + ft;
-    s.normal_force[k] = fn;
-    s.force[k] = f;
-    // add_point_force, written out (the lever rb from the body origin is already known).
-    ws.f_ext[b].template head<3>() += rb.cross(f);
-    ws.f_ext[b].template tail<3>() += f;
+    detail::apply_point_force(p, s, ws.f_ext[b], k, pw, rb, n, d, vn, vt, kd, bt);
   }
 }
 
