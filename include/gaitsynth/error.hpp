@@ -18,6 +18,19 @@ std::string concat(Parts&&... parts) {
   (os << ... << std::forward<Parts>(parts));
   return os.str();
 }
+
+// The throwing halves of the checks below, kept out of line and marked cold: the checks sit on
+// hot paths (every algorithm validates its arguments), where they must cost a compare and a
+// never-taken branch, not a call.
+[[noreturn]] [[gnu::cold]] [[gnu::noinline]] inline void throw_wrong_size(std::ptrdiff_t actual,
+                                                                          std::ptrdiff_t expected,
+                                                                          const char* what) {
+  throw std::invalid_argument(concat(what, ": wrong size, expected ", expected, ", got ", actual));
+}
+[[noreturn]] [[gnu::cold]] [[gnu::noinline]] inline void throw_not_positive(double value,
+                                                                            const char* what) {
+  throw std::invalid_argument(concat(what, " must be finite and > 0, got ", value));
+}
 }  // namespace detail
 
 /// Throws std::invalid_argument with the concatenation of `parts` when `condition` is false.
@@ -28,9 +41,8 @@ inline void check_argument(bool condition, Parts&&... parts) {
 
 /// Throws std::invalid_argument unless `actual == expected`, naming what was checked.
 inline void check_size(std::ptrdiff_t actual, std::ptrdiff_t expected, const char* what) {
-  if (actual != expected)
-    throw std::invalid_argument(
-        detail::concat(what, ": wrong size, expected ", expected, ", got ", actual));
+  if (actual != expected) [[unlikely]]
+    detail::throw_wrong_size(actual, expected, what);
 }
 
 /// Throws std::invalid_argument unless every coefficient of `x` is finite; names the first bad one.
@@ -44,9 +56,8 @@ inline void check_finite(const Vector& x, const char* what) {
 
 /// Throws std::invalid_argument unless `value` is finite and > 0.
 inline void check_positive(double value, const char* what) {
-  if (!(std::isfinite(value) && value > 0.0))
-    throw std::invalid_argument(
-        detail::concat(what, " must be finite and > 0, got ", value));
+  if (!(std::isfinite(value) && value > 0.0)) [[unlikely]]
+    detail::throw_not_positive(value, what);
 }
 
 }  // namespace gaitsynth
