@@ -176,32 +176,54 @@ inline void aba_passes_planar(const model<planar_root>& m, workspace<planar_root
   // Pass 2 (backward): Ia = IA - U D^-1 U^T, pa = pA + Ia c + U D^-1 u into the parent; the
   // parent's U and D get Ia S_p = X - U D^-1 Y and S_p^T Ia S_p = S_p^T X - D^-1 Y^2
   // (X = IA S_p, Y = U^T S_p) now, so only a multiply-add separates a division from the next.
+  // Along a chain (parent n - 1, the next node visited) the parent's sums stay in registers
+  // instead of a store and a reload on the critical path; the additions are the same, in the
+  // same order, as accumulating in memory.
   for (int n = nn - 1; n >= 1; --n) {
-    const pvec& S = P.S[n];
-    const psym& IA = P.IA[n];
-    const pvec U = P.U[n];
-    const double Dinv = 1.0 / P.D[n];
-    const double u = tau[nvr + n - 1] - S.dot(P.pA[n]);
-    P.Dinv[n] = Dinv;
-    P.u[n] = u;
-    const int p = s.node_parent[n];
-    const pvec DU = Dinv * U;
-    psym Ia;
-    Ia.a = IA.a - DU[0] * U[0];
-    Ia.b = IA.b - DU[0] * U[1];
-    Ia.c = IA.c - DU[0] * U[2];
-    Ia.d = IA.d - DU[1] * U[1];
-    Ia.e = IA.e - DU[1] * U[2];
-    Ia.f = IA.f - DU[2] * U[2];
-    P.pA[p] += P.pA[n] + sym_mul(Ia, P.C[n]) + DU * u;
-    if (p > 0) {
+    psym IA = P.IA[n];
+    pvec pA = P.pA[n], U = P.U[n];
+    double D = P.D[n];
+    for (;; --n) {
+      const pvec& S = P.S[n];
+      const double Dinv = 1.0 / D;
+      const double u = tau[nvr + n - 1] - S.dot(pA);
+      P.U[n] = U;
+      P.Dinv[n] = Dinv;
+      P.u[n] = u;
+      const int p = s.node_parent[n];
+      const pvec DU = Dinv * U;
+      psym Ia;
+      Ia.a = IA.a - DU[0] * U[0];
+      Ia.b = IA.b - DU[0] * U[1];
+      Ia.c = IA.c - DU[0] * U[2];
+      Ia.d = IA.d - DU[1] * U[1];
+      Ia.e = IA.e - DU[1] * U[2];
+      Ia.f = IA.f - DU[2] * U[2];
+      const pvec dpA = pA + sym_mul(Ia, P.C[n]) + DU * u;
+      if (p == 0) {
+        P.pA[0] += dpA;
+        P.IA[0] += Ia;
+        break;
+      }
       const pvec& Sp = P.S[p];
       const pvec X = sym_mul(IA, Sp);
       const double Y = U.dot(Sp);
-      P.U[p] += X - DU * Y;
-      P.D[p] += Sp.dot(X) - Dinv * (Y * Y);
+      const pvec dU = X - DU * Y;
+      const double dD = Sp.dot(X) - Dinv * (Y * Y);
+      if (p != n - 1) {  // the chain ends: the parent is visited later, from memory
+        P.pA[p] += dpA;
+        P.U[p] += dU;
+        P.D[p] += dD;
+        P.IA[p] += Ia;
+        break;
+      }
+      pA = P.pA[p] + dpA;
+      U = P.U[p] + dU;
+      D = P.D[p] + dD;
+      psym IAp = P.IA[p];
+      IAp += Ia;
+      IA = IAp;
     }
-    P.IA[p] += Ia;
   }
   // Root: S0 maps (x, z, pitch) to the planar components (1, 2, 0), so S0^T IA0 S0 is IA0 with
   // rows and columns permuted; solve it (3x3, symmetric positive definite) by LDL^T.
@@ -224,11 +246,19 @@ inline void aba_passes_planar(const model<planar_root>& m, workspace<planar_root
   ws.ddq[2] = x2;
   P.A[0] = a_pre + pvec(x2, x0, x1);
   // Pass 3 (forward).
+  // Along a chain the parent's acceleration stays in a register.
+  pvec A_prev = P.A[0];
   for (int n = 1; n < nn; ++n) {
-    const pvec a = P.A[s.node_parent[n]] + P.C[n];
+    const int p = s.node_parent[n];
+    pvec a;
+    if (p == n - 1)
+      a = A_prev + P.C[n];
+    else
+      a = P.A[p] + P.C[n];
     const double qdd = P.Dinv[n] * (P.u[n] - P.U[n].dot(a));
     ws.ddq[nvr + n - 1] = qdd;
-    P.A[n] = a + P.S[n] * qdd;
+    A_prev = a + P.S[n] * qdd;
+    P.A[n] = A_prev;
   }
 }
 
