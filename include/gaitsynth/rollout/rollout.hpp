@@ -136,10 +136,15 @@ double sensor_delay_of(const C& c) {
     return 0.0;
 }
 
-/// True when every entry of x is finite: x * 0 is 0 for finite entries and NaN otherwise, and the
-/// sum vectorizes (Eigen's allFinite tests the entries one by one, a branch each, every step).
+/// True when every entry of x is finite: x * 0 is 0 for finite entries and NaN otherwise. A
+/// scalar sum on purpose: q and v were just written entry by entry, and a vector load over
+/// several fresh scalar stores cannot be forwarded from the store buffer (it waits for them to
+/// retire), while the scalar loads forward and the sum stays off the critical path. (Eigen's
+/// allFinite adds a branch per entry.)
 inline bool all_finite(const Eigen::VectorXd& x) {
-  return (x.array() * 0.0).sum() == 0.0;
+  double zero = 0.0;
+  for (Eigen::Index i = 0; i < x.size(); ++i) zero += x[i] * 0.0;
+  return zero == 0.0;
 }
 
 inline std::int64_t horizon_steps(double duration, double dt) {
@@ -355,9 +360,22 @@ rollout_result rollout_impl(const model<Root>& m, const Actuator& act, C& ctrl,
     // 5. actuator and passive torques
     act.torques(m, s, Eigen::Ref<const Eigen::VectorXd>(scr.command), act_state,
                 Eigen::Ref<Eigen::VectorXd>(scr.tau.tail(nj)));
-    scr.tau_passive.setZero();
-    joint_limit_torques(m, s.q, s.v, scr.tau_passive);
-    scr.tau_total = scr.tau + scr.tau_passive;
+    // Passive limit torques and the total, in one scalar loop (joint_limit_torques on a zeroed
+    // vector, then tau + tau_passive): tau was just written entry by entry, and whole-vector
+    // operations here would load it before those stores can forward.
+    for (int i = 0; i < Root::nv; ++i) {
+      scr.tau_passive[i] = 0.0;
+      scr.tau_total[i] = scr.tau[i] + 0.0;
+    }
+    for (int j = 0; j < nj; ++j) {
+      const int i = Root::nv + j;
+      const joint_limit& L = m.dofs[j].limit;
+      const double passive = L.model == limit_model::none
+                                 ? 0.0
+                                 : 0.0 + joint_limit_torque(L, s.q[Root::nq + j], s.v[i]);
+      scr.tau_passive[i] = passive;
+      scr.tau_total[i] = scr.tau[i] + passive;
+    }
     // 6. objective and recorder
     view.t = t;
     view.step = k;
