@@ -192,8 +192,14 @@ void update_poses_planar(const model<planar_root>& m, workspace<planar_root>& ws
     }
     P.cos_b[b] = c;
     P.sin_b[b] = sn;
+    // R = Ry(pitch) = [c 0 s; 0 1 0; -s 0 c]. The five constant entries are set by
+    // make_workspace and never change (the 6D path writes the same values), so only the four
+    // in-plane entries are stored per step.
     mat3& R = ws.body_rotation[b];
-    R << c, 0.0, sn, 0.0, 1.0, 0.0, -sn, 0.0, c;
+    R(0, 0) = c;
+    R(0, 2) = sn;
+    R(2, 0) = -sn;
+    R(2, 2) = c;
     s.body_rel[b] = rel;
     ws.body_position[b] = p0 + rel;
     const vec3& cb = bd.com;
