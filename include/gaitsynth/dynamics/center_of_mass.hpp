@@ -46,15 +46,15 @@ vec3 com_velocity(const model<Root>& m, const workspace<Root>& ws) {
     }
     return vec3(px / mass, 0.0, pz / mass);
   }
-  vec3 p = vec3::Zero();
+  // The linear part of each body's spatial momentum I v (kept by update_velocities) is
+  // m (v_o + omega x c), its COM velocity times its mass.
+  detail::svec p = detail::svec::Zero();
   double mass = 0.0;
   for (int b = 0; b < m.num_bodies(); ++b) {
-    const spatial::rigid_inertia& I = s.body_inertia[b];
-    const detail::svec& V = s.V[s.body_node[b]];
-    p += I.mass * (detail::lin(V) + detail::ang(V).cross(I.com));
-    mass += I.mass;
+    p += s.body_momentum[b];
+    mass += s.body_inertia[b].mass;
   }
-  return p / mass;
+  return vec3(detail::lin(p)) / mass;
 }
 
 }  // namespace gaitsynth

@@ -1,8 +1,8 @@
 #pragma once
 /// \file configuration.hpp
 /// Operations on generalized positions that respect the root's geometry (Pinocchio's
-/// joint-configuration.hpp): the floating root's orientation is a unit quaternion (w, x, y, z) whose
-/// velocity is the body-frame angular velocity, so q is not simply q + dt v.
+/// joint-configuration.hpp): the floating root's orientation is a unit quaternion (w, x, y, z)
+/// whose velocity is the body-frame angular velocity, so q is not simply q + dt v.
 #include <Eigen/Geometry>
 #include <algorithm>
 #include <cmath>
@@ -40,9 +40,8 @@ inline vec3 quat_log(const quat& q0) {
 }  // namespace detail
 
 /// q_out = q "+" v dt: joints and translations move by v dt; the floating root's quaternion is
-/// multiplied on the right by exp(omega_body dt / 2) (body-frame angular velocity) and renormalized.
-/// q_out may be the same vector as q.
-/// \throws std::invalid_argument on wrong sizes.
+/// multiplied on the right by exp(omega_body dt / 2) (body-frame angular velocity) and
+/// renormalized. q_out may be the same vector as q. \throws std::invalid_argument on wrong sizes.
 template <root_joint Root>
 void integrate_configuration(const model<Root>& m, const Eigen::Ref<const Eigen::VectorXd>& q,
                              const Eigen::Ref<const Eigen::VectorXd>& v, double dt,

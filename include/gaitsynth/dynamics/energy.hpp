@@ -21,8 +21,7 @@ double kinetic_energy(const model<Root>& m, const workspace<Root>& ws) {
   }
   double e = 0.0;
   for (int b = 0; b < m.num_bodies(); ++b)
-    e += 0.5 * detail::sdot(s.V[s.body_node[b]],
-                            detail::momentum_of(s.body_inertia[b], s.V[s.body_node[b]]));
+    e += 0.5 * detail::sdot(s.V[s.body_node[b]], s.body_momentum[b]);  // v . I v
   return e;
 }
 

@@ -23,8 +23,10 @@ inline double joint_limit_torque(const joint_limit& L, double x, double xd) {
       if (x < L.lower) return -L.stiffness * (x - L.lower) - L.damping * xd;
       return 0.0;
     case limit_model::exponential:
-      if (x > L.upper) return -L.stiffness * std::expm1(L.sharpness * (x - L.upper)) - L.damping * xd;
-      if (x < L.lower) return L.stiffness * std::expm1(L.sharpness * (L.lower - x)) - L.damping * xd;
+      if (x > L.upper)
+        return -L.stiffness * std::expm1(L.sharpness * (x - L.upper)) - L.damping * xd;
+      if (x < L.lower)
+        return L.stiffness * std::expm1(L.sharpness * (L.lower - x)) - L.damping * xd;
       return 0.0;
   }
   return 0.0;

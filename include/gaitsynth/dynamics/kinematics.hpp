@@ -142,7 +142,9 @@ void update_velocities(const model<Root>& m, workspace<Root>& ws, const Vv& v) {
     const svec& Vb = s.V[s.body_node[b]];
     ws.body_angular_velocity[b] = ang(Vb);
     ws.body_linear_velocity[b] = lin(Vb) + ang(Vb).cross(s.body_rel[b]);
-    s.body_bias[b] = cross_force(Vb, op_times(s.body_I[b], Vb));  // v x* I v (eq. 7.38)
+    const svec h = op_times(s.body_I[b], Vb);  // kept: com_velocity sums the linear parts
+    s.body_momentum[b] = h;
+    s.body_bias[b] = cross_force(Vb, h);  // v x* I v (eq. 7.38)
   }
 }
 

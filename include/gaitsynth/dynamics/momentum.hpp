@@ -38,7 +38,7 @@ momentum centroidal_momentum(const model<Root>& m, const workspace<Root>& ws) {
   double mass = 0.0;
   for (int b = 0; b < m.num_bodies(); ++b) {
     const spatial::rigid_inertia& I = s.body_inertia[b];
-    h += detail::to_vec6(detail::momentum_of(I, s.V[s.body_node[b]]));
+    h += detail::to_vec6(s.body_momentum[b]);  // I v, kept by the velocity pass
     c += I.mass * I.com;
     mass += I.mass;
   }

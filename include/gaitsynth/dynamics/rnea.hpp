@@ -1,7 +1,7 @@
 #pragma once
 /// \file rnea.hpp
-/// Inverse dynamics by the recursive Newton-Euler algorithm (Featherstone 2008, sec. 5.3, Table 5.1)
-/// in world axes about the root origin, with gravity as a fictitious base acceleration.
+/// Inverse dynamics by the recursive Newton-Euler algorithm (Featherstone 2008, sec. 5.3,
+/// Table 5.1) in world axes about the root origin, with gravity as a fictitious base acceleration.
 #include "gaitsynth/dynamics/aba.hpp"
 
 namespace gaitsynth {
@@ -104,6 +104,7 @@ const Eigen::VectorXd& gravity_forces(const model<Root>& m, workspace<Root>& ws,
   for (auto& x : s.V) x.setZero();
   for (auto& x : s.C) x.setZero();
   for (auto& x : s.body_bias) x.setZero();
+  for (auto& x : s.body_momentum) x.setZero();
   s.level = 1;  // the velocities in the scratch are no longer those of v_cache
   detail::rnea_passes(m, ws, nullptr, false, ws.bias);
   return ws.bias;

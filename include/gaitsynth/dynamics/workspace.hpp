@@ -85,12 +85,6 @@ inline svec cross_force(const svec& v, const svec& f) {
   const vec3 w = ang(v), vo = lin(v), n = ang(f), fl = lin(f);
   return make_svec(w.cross(n) + vo.cross(fl), w.cross(fl));
 }
-/// I v for a compact rigid inertia (no 6x6 matrix).
-inline svec momentum_of(const spatial::rigid_inertia& I, const svec& v) {
-  const vec3 w = ang(v);
-  const vec3 l = I.mass * (lin(v) + w.cross(I.com));
-  return make_svec(I.inertia_com * w + I.com.cross(l), l);
-}
 /// The padded 6x6 matrix of a compact rigid inertia (Featherstone eq. 2.63):
 /// [Ic + m (|c|^2 1 - c c^T), m [c]x; m [c]x^T, m 1].
 inline void inertia_matrix(const spatial::rigid_inertia& I, smat& out) {
@@ -200,9 +194,10 @@ struct dynamics_scratch {
   std::vector<vec3> body_rel;                        ///< body origin relative to ref, world axes
   std::vector<double> sin_q, cos_q;                  ///< per joint DOF: sin and cos of its angle
   std::vector<spatial::rigid_inertia> body_inertia;  ///< per body, world axes, about ref
-  std::vector<smat> body_I;     ///< per body: 6x6 spatial inertia (world axes, about ref)
-  std::vector<svec> body_bias;  ///< per body: v x* I v (velocity-product force)
-  std::vector<svec> S;          ///< per node (index 0 unused): joint motion axis, about ref
+  std::vector<smat> body_I;         ///< per body: 6x6 spatial inertia (world axes, about ref)
+  std::vector<svec> body_bias;      ///< per body: v x* I v (velocity-product force)
+  std::vector<svec> body_momentum;  ///< per body: I v (spatial momentum about ref)
+  std::vector<svec> S;              ///< per node (index 0 unused): joint motion axis, about ref
   root_subspace S0 = root_subspace::Zero();  ///< root joint motion subspace (6 x Root::nv)
   std::vector<svec> V;                       ///< per node: spatial velocity
   std::vector<svec> C;  ///< per node: velocity-product acceleration (Sdot qdot)
@@ -310,6 +305,7 @@ workspace<Root> make_workspace(const model<Root>& m) {
   s.Dacc.assign(nn, 0.0);
   s.body_I.assign(nb, zero6);
   s.body_bias.assign(nb, detail::svec::Zero());
+  s.body_momentum.assign(nb, detail::svec::Zero());
   s.Dinv.assign(nn, 0.0);
   s.u.assign(nn, 0.0);
   s.A.assign(nn, detail::svec::Zero());
