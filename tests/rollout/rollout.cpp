@@ -678,3 +678,90 @@ TEST_CASE("the objective sees which body's toe top touches", "[rollout][objectiv
     CHECK(r.cost > 0.0);  // toe-top steps on the toe body, none on the foot, no mismatch
   }
 }
+
+namespace {
+/// semi_implicit_euler without its evaluates_state_first promise: the rollout must then compare
+/// the state with the workspace's cache before every ABA.
+struct euler_without_promise : semi_implicit_euler {
+  static constexpr bool evaluates_state_first = false;
+};
+/// Position-first (kick-drift in the other order) Euler: q moves before sys is called on the
+/// state vectors themselves, so kinematics of the step's start would be stale. It makes no
+/// promise; the rollout must not reuse them.
+struct drift_then_kick {
+  static constexpr int order = 1;
+  Eigen::VectorXd ddq;
+  template <root_joint Root>
+  void prepare(const model<Root>& m) {
+    ddq.setZero(m.nv());
+  }
+  template <root_joint Root, class Sys>
+  void step(const model<Root>& m, sim_state& s, double dt, Sys&& sys) {
+    integrate_configuration(m, s.q, s.v, dt, s.q);
+    sys(static_cast<const Eigen::VectorXd&>(s.q), static_cast<const Eigen::VectorXd&>(s.v), s.t,
+        ddq);
+    s.v += dt * ddq;
+    s.t += dt;
+  }
+};
+}  // namespace
+
+TEST_CASE("reusing the step's kinematics for ABA changes nothing", "[rollout][integrator]") {
+  static_assert(integrator_evaluating_state_first<semi_implicit_euler>);
+  static_assert(!integrator_evaluating_state_first<euler_without_promise>);
+  static_assert(!integrator_evaluating_state_first<drift_then_kick>);
+  const auto run = [](const auto& m, auto integ) {
+    auto scr = make_rollout_scratch(m);
+    auto opt = standing_options(m, 0.3);
+    opt.pushes = {push{0, vec3(150, 40, 0), 0.05, 0.1}};
+    const Eigen::VectorXd p = standing_pose(m);
+    const rollout_result r = rollout(m, standing_pd(m, dt), pose_hold(m), distance_objective(),
+                                     flat_terrain(), integ, p, opt, scr);
+    return std::pair{r, scr.state};
+  };
+  SECTION("3D humanoid") {
+    const auto m = wang2009_humanoid();
+    const auto [a, sa] = run(m, semi_implicit_euler());
+    const auto [b, sb] = run(m, euler_without_promise());
+    CHECK(a.steps == b.steps);
+    CHECK(a.cost == b.cost);  // the same arithmetic on the same kinematics: bit-identical
+    CHECK(sa.q == sb.q);
+    CHECK(sa.v == sb.v);
+  }
+  SECTION("7-link planar human (planar fast path)") {
+    const auto m = sharon2005_human7();
+    const auto [a, sa] = run(m, semi_implicit_euler());
+    const auto [b, sb] = run(m, euler_without_promise());
+    CHECK(a.cost == b.cost);
+    CHECK(sa.q == sb.q);
+    CHECK(sa.v == sb.v);
+  }
+  SECTION("an integrator that moves q before evaluating gets fresh kinematics") {
+    // Reference: the same drift-then-kick scheme written out with the public algorithms.
+    const auto m = sharon2005_human7();
+    const auto [r, sr] = run(m, drift_then_kick());
+    auto opt = standing_options(m, 0.3);
+    opt.pushes = {push{0, vec3(150, 40, 0), 0.05, 0.1}};
+    const pd_actuator act = standing_pd(m, dt);
+    auto act_state = act.make_state(m);
+    const Eigen::VectorXd target = standing_pose(m);
+    auto ws = make_workspace(m);
+    auto cs = make_contact_state(m);
+    sim_state s = opt.initial_state;
+    Eigen::VectorXd tau = Eigen::VectorXd::Zero(m.nv());
+    for (std::int64_t k = 0; k < r.steps; ++k) {
+      s.t = static_cast<double>(k) * dt;
+      forward_kinematics(m, ws, s.q, s.v);
+      clear_external_wrenches(ws);
+      apply_contact_forces(m, ws, flat_terrain(), opt.contact, cs, dt);
+      apply_pushes(m, ws, std::span<const push>(opt.pushes), s.t);
+      tau.setZero();
+      act.torques(m, s, target, act_state, tau.tail(m.num_joint_dofs()));
+      joint_limit_torques(m, s.q, s.v, tau);
+      integrate_configuration(m, s.q, s.v, dt, s.q);
+      s.v += dt * aba(m, ws, s.q, s.v, tau);
+    }
+    CHECK(sr.q == s.q);
+    CHECK(sr.v == s.v);
+  }
+}

@@ -262,6 +262,21 @@ inline void aba_passes_planar(const model<planar_root>& m, workspace<planar_root
   }
 }
 
+/// ABA for the (q, v) the workspace's kinematics are current for (the caller guarantees it: the
+/// rollout loop, which just ran forward_kinematics on the state it integrates). \returns ws.ddq
+template <root_joint Root>
+const Eigen::VectorXd& aba_with_current_kinematics(const model<Root>& m, workspace<Root>& ws,
+                                                   const Eigen::Ref<const Eigen::VectorXd>& tau) {
+  if constexpr (std::is_same_v<Root, planar_root>) {
+    if (ws.scratch.planar.enabled) {
+      aba_passes_planar(m, ws, tau);
+      return ws.ddq;
+    }
+  }
+  aba_passes(m, ws, tau);
+  return ws.ddq;
+}
+
 }  // namespace detail
 
 /// Forward dynamics: the generalized accelerations ddq (size nv) for positions q (nq), velocities v

@@ -23,9 +23,10 @@ namespace gaitsynth {
 
 /// A callable usable as the second-order system of an integrator.
 template <class Sys>
-concept second_order_system =
-    requires(Sys& sys, const Eigen::VectorXd& q, const Eigen::VectorXd& v, double t,
-             Eigen::VectorXd& ddq) { sys(q, v, t, ddq); };
+concept second_order_system = requires(Sys& sys, const Eigen::VectorXd& q, const Eigen::VectorXd& v,
+                                       double t, Eigen::VectorXd& ddq) {
+  sys(q, v, t, ddq);
+};
 
 namespace detail {
 /// The minimal system, used to check the integrator concept.
@@ -44,6 +45,15 @@ concept integrator = root_joint<Root> && requires(I& integ, const model<Root>& m
   integ.step(m, s, dt, sys);
   integ.prepare(m);
   { I::order } -> std::convertible_to<int>;
+};
+
+/// Optional promise of an integrator: `static constexpr bool evaluates_state_first = true` means
+/// that step() calls sys(state.q, state.v, ...) on the state vectors themselves, unchanged, before
+/// anything else. The rollout then reuses the kinematics it computed for that state instead of
+/// comparing q and v with the workspace's cache (semi_implicit_euler makes the promise).
+template <class I>
+concept integrator_evaluating_state_first = requires {
+  requires static_cast<bool>(I::evaluates_state_first);
 };
 
 }  // namespace gaitsynth

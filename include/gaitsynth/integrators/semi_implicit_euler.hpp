@@ -13,6 +13,8 @@ namespace gaitsynth {
 
 struct semi_implicit_euler {
   static constexpr int order = 1;
+  /// step() evaluates sys on the unchanged state first (integrators/concept.hpp).
+  static constexpr bool evaluates_state_first = true;
 
   semi_implicit_euler() = default;
   template <root_joint Root>

@@ -288,9 +288,19 @@ rollout_result rollout_impl(const model<Root>& m, const Actuator& act, C& ctrl,
   view.toe_top_touching = scr.contacts.toe_top_touching;  // per body (Wang 2009: the swing toe's)
   view.actuator_state_ptr = &act_state;
 
-  // The system the integrator steps: ABA with the held torques and external wrenches.
+  // The system the integrator steps: ABA with the held torques and external wrenches. An
+  // integrator that evaluates it first on the unchanged state (integrator_evaluating_state_first)
+  // gets ABA on the kinematics of step 1, which are still current: nothing between step 1 and the
+  // integrator can change s or ws's kinematics (controllers, actuators and objectives see them
+  // through const views), so aba()'s comparison of q and v with its cache is skipped.
+  bool kinematics_current = false;
   auto sys = [&](const Eigen::VectorXd& q, const Eigen::VectorXd& v, double, Eigen::VectorXd& ddq) {
-    ddq = aba(m, ws, q, v, scr.tau_total);
+    if (kinematics_current && &q == &s.q && &v == &s.v) {
+      kinematics_current = false;  // the first evaluation only
+      ddq = detail::aba_with_current_kinematics(m, ws, scr.tau_total);
+    } else {
+      ddq = aba(m, ws, q, v, scr.tau_total);
+    }
   };
 
   // Fills the next trajectory frame with the state at step k_rec (kinematics current).
@@ -331,6 +341,7 @@ rollout_result rollout_impl(const model<Root>& m, const Actuator& act, C& ctrl,
     s.t = t;
     // 1. kinematics (cached by the workspace when already current)
     forward_kinematics(m, ws, s.q, s.v);
+    kinematics_current = integrator_evaluating_state_first<std::remove_cvref_t<Integrator>>;
     com = center_of_mass(m, ws);
     com_v = com_velocity(m, ws);
     res.com_final = com;
@@ -392,6 +403,7 @@ rollout_result rollout_impl(const model<Root>& m, const Actuator& act, C& ctrl,
     }
     // 7. integrate
     integ.step(m, s, dt, sys);
+    kinematics_current = false;
     if constexpr (actuator_with_advance<Actuator, Root>) {
       act.advance(m, s, Eigen::Ref<const Eigen::VectorXd>(scr.command), act_state, dt);
     } else if constexpr (actuator_with_derivative<Actuator, Root>) {
