@@ -1,6 +1,7 @@
 // Contact benchmarks: penalty forces for the Wang 2009 humanoid's 16 foot and toe points on each
-// terrain type (kinematics done once outside the loop), terrain queries, and one full physics step
-// (kinematics + contact + ABA + semi-implicit Euler) standing on flat ground.
+// terrain type (kinematics done once outside the loop), the 7-link planar human's 4 points on the
+// planar path and on the general path, terrain queries, and one full physics step (kinematics +
+// contact + ABA + semi-implicit Euler) standing on flat ground.
 #include <benchmark/benchmark.h>
 
 #include <random>
@@ -14,6 +15,7 @@
 #include "gaitsynth/contact/steps_terrain.hpp"
 #include "gaitsynth/dynamics/aba.hpp"
 #include "gaitsynth/dynamics/configuration.hpp"
+#include "gaitsynth/models/sharon2005.hpp"
 #include "gaitsynth/models/standing.hpp"
 #include "gaitsynth/models/wang2009.hpp"
 
@@ -52,6 +54,37 @@ void contact_forces(benchmark::State& state, const T& ground, double ground_z) {
   state.counters["touching"] = f.cs.total_points_touching;
 }
 }  // namespace
+
+/// The 7-link human standing 1 mm into flat ground (all 4 foot points touch), small random v;
+/// `planar_path` false runs the general path on the same kinematics.
+static void contact_human7(benchmark::State& state, bool planar_path) {
+  const planar_model m = sharon2005_human7();
+  auto ws = make_workspace(m);
+  auto cs = make_contact_state(m);
+  const Eigen::VectorXd q = standing_configuration(m, -0.001);
+  std::mt19937_64 rng(1);
+  std::normal_distribution<double> n(0.0, 0.05);
+  Eigen::VectorXd v = Eigen::VectorXd::Zero(m.nv());
+  for (Eigen::Index i = 0; i < v.size(); ++i) v[i] = n(rng);
+  forward_kinematics(m, ws, q, v);
+  ws.scratch.planar.enabled = planar_path;  // internal switch; kinematics stay as computed
+  const contact_parameters p;
+  for (auto _ : state) {
+    clear_external_wrenches(ws);
+    apply_contact_forces(m, ws, flat_terrain(), p, cs, kDt);
+    benchmark::DoNotOptimize(ws.f_ext.data());
+    benchmark::ClobberMemory();
+  }
+  state.counters["touching"] = cs.total_points_touching;
+}
+static void BM_contact_human7_planar_path(benchmark::State& s) {
+  contact_human7(s, true);
+}
+BENCHMARK(BM_contact_human7_planar_path);
+static void BM_contact_human7_general_path(benchmark::State& s) {
+  contact_human7(s, false);
+}
+BENCHMARK(BM_contact_human7_general_path);
 
 static void BM_contact_flat(benchmark::State& s) {
   contact_forces(s, flat_terrain(0.0), 0.0);
