@@ -16,6 +16,7 @@
 #include <Eigen/Eigenvalues>
 
 #include "gaitsynth/actuators/concept.hpp"
+#include "gaitsynth/actuators/pd_law.hpp"
 #include "gaitsynth/dynamics/crba.hpp"
 #include "gaitsynth/dynamics/workspace.hpp"
 #include "gaitsynth/error.hpp"
@@ -130,10 +131,9 @@ struct pd_actuator {
                state_type&, Eigen::Ref<Eigen::VectorXd> tau) const {
     const int nj = m.num_joint_dofs();
     for (int j = 0; j < nj; ++j) {
-      double t = kp[j] * (cmd[j] - s.q[Root::nq + j]) - kd[j] * s.v[Root::nv + j];
+      double t = pd_torque(kp[j], kd[j], cmd[j], s.q[Root::nq + j], s.v[Root::nv + j]);
       if (feedforward) t += cmd[nj + j];
-      const double lim = m.dofs[j].torque_limit;
-      tau[j] = t > lim ? lim : (t < -lim ? -lim : t);
+      tau[j] = clamp_torque(t, m.dofs[j].torque_limit);
     }
   }
 };

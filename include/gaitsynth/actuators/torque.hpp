@@ -7,6 +7,7 @@
 #include <algorithm>
 
 #include "gaitsynth/actuators/concept.hpp"
+#include "gaitsynth/actuators/pd_law.hpp"
 #include "gaitsynth/error.hpp"
 
 namespace gaitsynth {
@@ -30,10 +31,7 @@ struct torque_actuator {
   void torques(const model<Root>& m, const sim_state&, Eigen::Ref<const Eigen::VectorXd> cmd,
                state_type&, Eigen::Ref<Eigen::VectorXd> tau) const {
     const int nj = m.num_joint_dofs();
-    for (int j = 0; j < nj; ++j) {
-      const double lim = m.dofs[j].torque_limit;
-      tau[j] = cmd[j] > lim ? lim : (cmd[j] < -lim ? -lim : cmd[j]);
-    }
+    for (int j = 0; j < nj; ++j) tau[j] = clamp_torque(cmd[j], m.dofs[j].torque_limit);
   }
 };
 

@@ -45,6 +45,7 @@
 #include <vector>
 
 #include "gaitsynth/actuators/concept.hpp"
+#include "gaitsynth/actuators/pd_law.hpp"
 #include "gaitsynth/controllers/concept.hpp"
 #include "gaitsynth/controllers/keyframes.hpp"
 #include "gaitsynth/controllers/sensors.hpp"
@@ -287,18 +288,18 @@ class nearest_neighbor_controller {
       servo_tau = -t_torso / hip_axis_y_[servo_dof == lhip_ ? 0 : 1];
       if (opt_.compensate_swing_hip) {
         // The swing hip's PD torque (as applied, after the limit) also reacts on the torso.
-        const double ts = std::clamp(kp_[swing_dof] * (out_(swing_dof, a) - q[Root::nq + swing_dof]) -
-                                         kd_[swing_dof] * v[Root::nv + swing_dof],
+        const double ts = std::clamp(pd_torque(kp_[swing_dof], kd_[swing_dof], out_(swing_dof, a),
+                                               q[Root::nq + swing_dof], v[Root::nv + swing_dof]),
                                      -opt_.torque_limit, opt_.torque_limit);
-        servo_tau -= ts * hip_axis_y_[swing_dof == lhip_ ? 0 : 1] /
-                     hip_axis_y_[servo_dof == lhip_ ? 0 : 1];
+        servo_tau -=
+            ts * hip_axis_y_[swing_dof == lhip_ ? 0 : 1] / hip_axis_y_[servo_dof == lhip_ ? 0 : 1];
       }
     }
     if (opt_.output == command_kind::joint_torque) {
       for (int j = 0; j < nj_; ++j) {
-        double t = (j == servo_dof)
-                       ? servo_tau
-                       : kp_[j] * (out_(j, a) - q[Root::nq + j]) - kd_[j] * v[Root::nv + j];
+        const double t = (j == servo_dof) ? servo_tau
+                                          : pd_torque(kp_[j], kd_[j], out_(j, a), q[Root::nq + j],
+                                                      v[Root::nv + j]);
         cmd[j] = std::clamp(t, -opt_.torque_limit, opt_.torque_limit);
       }
     } else {
@@ -306,8 +307,8 @@ class nearest_neighbor_controller {
       if (servo_dof >= 0) {
         // The target whose PD torque kp (target - q) - kd qdot equals the servo torque.
         const double t = std::clamp(servo_tau, -opt_.torque_limit, opt_.torque_limit);
-        cmd[servo_dof] = q[Root::nq + servo_dof] +
-                         (t + kd_[servo_dof] * v[Root::nv + servo_dof]) / kp_[servo_dof];
+        cmd[servo_dof] = pd_target_for_torque(kp_[servo_dof], kd_[servo_dof], t,
+                                              q[Root::nq + servo_dof], v[Root::nv + servo_dof]);
       }
       if (cmd.size() > nj_) cmd.tail(cmd.size() - nj_).setZero();  // no feed-forward torque
     }

@@ -3,7 +3,7 @@
 /// The simplest controller: hold one target pose. Its parameters are the target joint angles
 /// (num_joint_dofs, rad). With pd_actuator it outputs the targets (mode joint_target); with
 /// torque_actuator it runs its own PD law tau_j = kp_j (target_j - q_j) - kd_j qdot_j (mode
-/// joint_torque; all gains 0 makes a passive character).
+/// joint_torque, pd_torque of actuators/pd_law.hpp; all gains 0 makes a passive character).
 /// Used by tests, benchmarks (a standing humanoid) and the simulation demo.
 #include <Eigen/Core>
 #include <cstdint>
@@ -11,6 +11,7 @@
 #include <utility>
 
 #include "gaitsynth/actuators/concept.hpp"
+#include "gaitsynth/actuators/pd_law.hpp"
 #include "gaitsynth/controllers/concept.hpp"
 #include "gaitsynth/controllers/sensors.hpp"
 #include "gaitsynth/error.hpp"
@@ -83,8 +84,8 @@ class pose_hold {
       cmd.head(nj) = target_;
       if (cmd.size() > nj) cmd.tail(cmd.size() - nj).setZero();  // no feed-forward torque
     } else {
-      cmd = opt_.kp.cwiseProduct(target_ - s.joint_angles()) -
-            opt_.kd.cwiseProduct(s.joint_velocities());
+      // The vector form of the law (kept a vector expression: the same rounding as before).
+      cmd = pd_torque(opt_.kp, opt_.kd, target_, s.joint_angles(), s.joint_velocities());
     }
   }
 
