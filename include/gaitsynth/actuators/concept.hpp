@@ -8,8 +8,11 @@
 ///   A::state_type            its own evolving state (muscle activation, fiber length); an empty
 ///                            struct (no_actuator_state) for stateless actuators
 ///   a.make_state(m)          -> A::state_type (set-up; may allocate; validates sizes vs. the
-///   model) a.command_size(m)        -> int, length of the command vector the controller writes
-///   a.input_kind()           -> command_kind, what the command means
+///                            model)
+///   a.command_size(m)        -> int, length of the command vector the controller writes
+///   a.input_kind()           -> command_kind, what the command means (command_kind.hpp); make
+///                            it `static constexpr` when it is fixed by the type, so that
+///                            check_command_kinds can compare it at compile time
 ///   a.torques(m, s, cmd, st, tau)
 ///                            writes the joint torques (size num_joint_dofs, N m; the root is
 ///                            unactuated) for state s and command cmd. A pure function of its
@@ -26,17 +29,11 @@
 #include <Eigen/Core>
 #include <concepts>
 
+#include "gaitsynth/actuators/command_kind.hpp"
 #include "gaitsynth/model/model.hpp"
 #include "gaitsynth/model/state.hpp"
 
 namespace gaitsynth {
-
-/// What an actuator command vector means.
-enum class command_kind {
-  joint_torque,  ///< N m per joint DOF
-  joint_target,  ///< target angle per joint DOF (rad), optionally followed by feed-forward torques
-  excitation     ///< neural excitation per muscle in [0, 1]
-};
 
 /// The state of an actuator that has none.
 struct no_actuator_state {};

@@ -24,6 +24,9 @@
 ///
 /// Optional hooks, detected with requires (a controller without them pays nothing):
 ///   cc.output_kind() -> command_kind     checked against the actuator's at set-up
+///                                        (check_command_kinds, actuators/command_kind.hpp); at
+///                                        compile time when it is static constexpr and the
+///                                        actuator's input_kind() is too
 ///   cc.max_sensor_delay() -> double (s)  longest delay it reads through sensors::delayed_*
 ///   cc.initial_state(m, sim_state&)      overwrite the start state (start-state parameters,
 ///                                        Wang et al. 2009 Sec. 4 optimize it with the controller)
@@ -33,6 +36,7 @@
 #include <cstddef>
 #include <span>
 
+#include "gaitsynth/actuators/command_kind.hpp"
 #include "gaitsynth/actuators/concept.hpp"
 #include "gaitsynth/controllers/sensors.hpp"
 #include "gaitsynth/error.hpp"
@@ -54,10 +58,8 @@ concept controller = root_joint<Root> && std::derived_from<S, sensors<Root>> &&
   cc.command(s, st, cmd);
 };
 
-template <class C>
-concept controller_with_output_kind = requires(const C& c) {
-  { c.output_kind() } -> std::same_as<command_kind>;
-};
+// controller_with_output_kind (and its static form) is in actuators/command_kind.hpp, next to
+// check_command_kinds.
 template <class C>
 concept controller_with_sensor_delay = requires(const C& c) {
   { c.max_sensor_delay() } -> std::convertible_to<double>;

@@ -3,7 +3,8 @@
 /// The simplest controller: hold one target pose. Its parameters are the target joint angles
 /// (num_joint_dofs, rad). With pd_actuator it outputs the targets (mode joint_target); with
 /// torque_actuator it runs its own PD law tau_j = kp_j (target_j - q_j) - kd_j qdot_j (mode
-/// joint_torque, pd_torque of actuators/pd_law.hpp; all gains 0 makes a passive character).
+/// joint_torque, pd_torque of actuators/pd_law.hpp; all gains 0 makes a passive character); with
+/// mixed_pd_actuator it sends the targets with its gains (mode mixed: [target | kp | kd | 0]).
 /// Used by tests, benchmarks (a standing humanoid) and the simulation demo.
 #include <Eigen/Core>
 #include <cstdint>
@@ -19,10 +20,10 @@
 namespace gaitsynth {
 
 struct pose_hold_options {
-  command_kind output = command_kind::joint_target;  ///< joint_target or joint_torque
+  command_kind output = command_kind::joint_target;  ///< joint_target, joint_torque or mixed
   double period = 0.0;                               ///< s between commands (0: every physics step)
-  /// joint_torque mode only: per joint DOF gains (N m / rad, N m s / rad); empty means 0 (a
-  /// passive character). pd_actuator::capped gives gains that are stable at a timestep.
+  /// joint_torque and mixed modes: per joint DOF gains (N m / rad, N m s / rad); empty means 0
+  /// (a passive character). pd_actuator::capped gives gains that are stable at a timestep.
   Eigen::VectorXd kp, kd;
 };
 
@@ -40,9 +41,11 @@ class pose_hold {
       : opt_(std::move(o)), target_(num_joint_dofs > 0 ? num_joint_dofs : 0) {
     check_argument(num_joint_dofs >= 0, "pose_hold: num_joint_dofs must be >= 0, got ",
                    num_joint_dofs);
-    check_argument(
-        opt_.output == command_kind::joint_target || opt_.output == command_kind::joint_torque,
-        "pose_hold: output must be joint_target or joint_torque");
+    check_argument(opt_.output == command_kind::joint_target ||
+                       opt_.output == command_kind::joint_torque ||
+                       opt_.output == command_kind::mixed,
+                   "pose_hold: output must be joint_target, joint_torque or mixed, got ",
+                   to_string(opt_.output));
     check_argument(std::isfinite(opt_.period) && opt_.period >= 0,
                    "pose_hold: period must be finite and >= 0 s, got ", opt_.period);
     for (Eigen::VectorXd* g : {&opt_.kp, &opt_.kd}) {
@@ -83,6 +86,11 @@ class pose_hold {
     if (opt_.output == command_kind::joint_target) {
       cmd.head(nj) = target_;
       if (cmd.size() > nj) cmd.tail(cmd.size() - nj).setZero();  // no feed-forward torque
+    } else if (opt_.output == command_kind::mixed) {
+      cmd.segment(0, nj) = target_;  // mixed_pd_actuator's layout: every DOF servos to its target
+      cmd.segment(nj, nj) = opt_.kp;
+      cmd.segment(2 * nj, nj) = opt_.kd;
+      cmd.segment(3 * nj, nj).setZero();  // no torque
     } else {
       // The vector form of the law (kept a vector expression: the same rounding as before).
       cmd = pd_torque(opt_.kp, opt_.kd, target_, s.joint_angles(), s.joint_velocities());
