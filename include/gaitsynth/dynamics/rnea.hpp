@@ -8,29 +8,35 @@ namespace gaitsynth {
 
 namespace detail {
 
-/// tau = M(q) a + C(q, v) v + g(q) [- J^T f_ext]; `a == nullptr` means a = 0. Kinematics current.
+/// tau = M(q) a + C(q, v) v + g(q) [- J^T f_ext]; `a == nullptr` means a = 0, and
+/// `with_velocity == false` means v = 0: the velocity terms (C, v x* I v) are then neither read
+/// nor written, so gravity_forces leaves the velocities of v_cache to the readers. Poses current,
+/// and velocities when with_velocity.
 template <root_joint Root>
-void rnea_passes(const model<Root>& m, workspace<Root>& ws, const double* a, bool with_external,
-                 Eigen::VectorXd& out) {
+void rnea_passes(const model<Root>& m, workspace<Root>& ws, const double* a, bool with_velocity,
+                 bool with_external, Eigen::VectorXd& out) {
   auto& s = ws.scratch;
   constexpr int nvr = Root::nv;
   const int nn = s.nj + 1;
   const svec a_base = base_acceleration(m);
   if constexpr (nvr > 0) {
-    s.A[0] = a_base + s.C[0];
+    s.A[0] = a_base;
+    if (with_velocity) s.A[0] += s.C[0];
     if (a) s.A[0].template head<6>() += s.S0 * Eigen::Map<const Eigen::Matrix<double, nvr, 1>>(a);
   } else {
     s.A[0] = a_base;
   }
   for (int n = 1; n < nn; ++n) {
-    s.A[n] = s.A[s.node_parent[n]] + s.C[n];
+    s.A[n] = s.A[s.node_parent[n]];
+    if (with_velocity) s.A[n] += s.C[n];
     if (a) s.A[n] += s.S[n] * a[nvr + n - 1];
   }
   // Body forces f = I a + v x* I v (eq. 5.9 in world axes), minus external wrenches.
   for (int n = 0; n < nn; ++n) {
     const int b = s.node_body[n];
     if (b >= 0) {
-      s.pA[n] = op_times(s.body_I[b], s.A[n]) + s.body_bias[b];
+      s.pA[n] = op_times(s.body_I[b], s.A[n]);
+      if (with_velocity) s.pA[n] += s.body_bias[b];
       if (with_external) s.pA[n] -= external_force_at_ref(ws, b);
     } else {
       s.pA[n].setZero();
@@ -59,7 +65,7 @@ const Eigen::VectorXd& rnea(const model<Root>& m, workspace<Root>& ws,
   detail::check_v(m, v, "v (generalized velocities)");
   detail::check_v(m, a, "a (generalized accelerations)");
   detail::ensure_kinematics(m, ws, q, v);
-  detail::rnea_passes(m, ws, a.data(), false, ws.tau);
+  detail::rnea_passes(m, ws, a.data(), true, false, ws.tau);
   return ws.tau;
 }
 
@@ -75,7 +81,7 @@ const Eigen::VectorXd& rnea_with_external(const model<Root>& m, workspace<Root>&
   detail::check_v(m, v, "v (generalized velocities)");
   detail::check_v(m, a, "a (generalized accelerations)");
   detail::ensure_kinematics(m, ws, q, v);
-  detail::rnea_passes(m, ws, a.data(), true, ws.tau);
+  detail::rnea_passes(m, ws, a.data(), true, true, ws.tau);
   return ws.tau;
 }
 
@@ -89,24 +95,19 @@ const Eigen::VectorXd& nonlinear_effects(const model<Root>& m, workspace<Root>& 
   detail::check_q(m, q);
   detail::check_v(m, v, "v (generalized velocities)");
   detail::ensure_kinematics(m, ws, q, v);
-  detail::rnea_passes(m, ws, nullptr, false, ws.bias);
+  detail::rnea_passes(m, ws, nullptr, true, false, ws.bias);
   return ws.bias;
 }
 
-/// The gravity forces g(q) alone (RNEA with v = 0, a = 0). \returns ws.bias
+/// The gravity forces g(q) alone (RNEA with v = 0, a = 0). Leaves the cached velocities alone:
+/// after forward_kinematics(q, v) the velocity readers still see v. \returns ws.bias
 template <root_joint Root>
 const Eigen::VectorXd& gravity_forces(const model<Root>& m, workspace<Root>& ws,
                                       const Eigen::Ref<const Eigen::VectorXd>& q) {
   detail::check_workspace(m, ws);
   detail::check_q(m, q);
   detail::ensure_poses(m, ws, q);
-  auto& s = ws.scratch;
-  for (auto& x : s.V) x.setZero();
-  for (auto& x : s.C) x.setZero();
-  for (auto& x : s.body_bias) x.setZero();
-  for (auto& x : s.body_momentum) x.setZero();
-  s.level = 1;  // the velocities in the scratch are no longer those of v_cache
-  detail::rnea_passes(m, ws, nullptr, false, ws.bias);
+  detail::rnea_passes(m, ws, nullptr, false, false, ws.bias);
   return ws.bias;
 }
 
