@@ -6,6 +6,7 @@
 namespace gaitsynth {
 
 /// Centre of mass of the whole model, world, m (after forward_kinematics).
+/// \throws std::logic_error if the workspace holds no kinematics yet.
 template <root_joint Root>
 vec3 center_of_mass(const model<Root>& m, const workspace<Root>& ws) {
   const auto& s = ws.scratch;
@@ -19,6 +20,7 @@ vec3 center_of_mass(const model<Root>& m, const workspace<Root>& ws) {
     }
     return s.ref + c / mass;
   }
+  detail::require_kinematics(s.level, 1, "center_of_mass");
   vec3 c = vec3::Zero();
   double mass = 0.0;
   for (int b = 0; b < m.num_bodies(); ++b) {
@@ -29,6 +31,7 @@ vec3 center_of_mass(const model<Root>& m, const workspace<Root>& ws) {
 }
 
 /// Velocity of the centre of mass, world, m/s (after forward_kinematics with v).
+/// \throws std::logic_error if the workspace holds no velocities for its current configuration.
 template <root_joint Root>
 vec3 com_velocity(const model<Root>& m, const workspace<Root>& ws) {
   const auto& s = ws.scratch;
@@ -46,6 +49,7 @@ vec3 com_velocity(const model<Root>& m, const workspace<Root>& ws) {
     }
     return vec3(px / mass, 0.0, pz / mass);
   }
+  detail::require_kinematics(s.level, 2, "com_velocity");
   // The linear part of each body's spatial momentum I v (kept by update_velocities) is
   // m (v_o + omega x c), its COM velocity times its mass.
   detail::svec p = detail::svec::Zero();

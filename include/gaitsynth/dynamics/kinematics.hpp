@@ -241,6 +241,30 @@ void update_velocities_planar(const model<planar_root>& m, workspace<planar_root
   }
 }
 
+/// The throwing half of require_kinematics (cold, out of line: the check sits on the rollout's
+/// per-step readers, where it must cost a compare and a never-taken branch).
+[[noreturn]] [[gnu::cold]] [[gnu::noinline]] inline void throw_no_kinematics(const char* reader,
+                                                                             int needed) {
+  if (needed >= 2)
+    throw std::logic_error(
+        concat(reader,
+               ": the workspace holds no velocities for its current configuration (none since "
+               "make_workspace or invalidate_kinematics, or an algorithm taking only q moved it to "
+               "another q since): call forward_kinematics(m, ws, q, v) first"));
+  throw std::logic_error(concat(reader,
+                                ": the workspace holds no kinematics (a new workspace, or after "
+                                "invalidate_kinematics): call forward_kinematics(m, ws, q) first"));
+}
+
+/// Throws std::logic_error unless `level` (a scratch level: 1 poses, 2 poses and velocities of
+/// q_cache and v_cache) is at least `needed`. The readers (center_of_mass, com_velocity,
+/// centroidal_momentum, the energies, point_velocity) check the level of the scratch set they
+/// read, so they return the kinematics of the last (q, v) or throw, never stale or zeroed values.
+inline void require_kinematics(int level, int needed, const char* reader) {
+  if (level < needed) [[unlikely]]
+    throw_no_kinematics(reader, needed);
+}
+
 template <root_joint Root, class Q>
 void check_q(const model<Root>& m, const Q& q) {
   check_size(q.size(), m.nq(), "q (generalized positions)");
@@ -383,9 +407,13 @@ vec3 point_position(const model<Root>& m, const workspace<Root>& ws, int body, c
 }
 
 /// World velocity of the point p_body (body frame) of `body` (after forward_kinematics with v).
+/// \throws std::logic_error if the workspace holds no velocities for its current configuration.
 template <root_joint Root>
 vec3 point_velocity(const model<Root>& m, const workspace<Root>& ws, int body, const vec3& p_body) {
   (void)m;
+  // Either scratch set's velocities are current: both write the public ones.
+  detail::require_kinematics(std::max(ws.scratch.level, ws.scratch.planar.level), 2,
+                             "point_velocity");
   return ws.body_linear_velocity[body] +
          ws.body_angular_velocity[body].cross(ws.body_rotation[body] * p_body);
 }

@@ -13,10 +13,12 @@ struct momentum {
 };
 
 /// Centroidal momentum (after forward_kinematics with v).
+/// \throws std::logic_error if the workspace holds no velocities for its current configuration.
 template <root_joint Root>
 momentum centroidal_momentum(const model<Root>& m, const workspace<Root>& ws) {
   const auto& s = ws.scratch;
   if (detail::planar_path(ws) && s.level < 2) {
+    detail::require_kinematics(s.planar.level, 2, "centroidal_momentum");
     // The planar fast path leaves the 6D scratch stale: sum over bodies from the public outputs
     // (each body's COM velocity v_o + omega x R c and its spin R Ic R^T omega).
     const vec3 com = center_of_mass(m, ws);
@@ -33,6 +35,7 @@ momentum centroidal_momentum(const model<Root>& m, const workspace<Root>& ws) {
     }
     return out;
   }
+  detail::require_kinematics(s.level, 2, "centroidal_momentum");
   vec6 h = vec6::Zero();  // about the reference point
   vec3 c = vec3::Zero();
   double mass = 0.0;

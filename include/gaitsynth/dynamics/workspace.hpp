@@ -371,7 +371,8 @@ void disable_planar_path(workspace<Root>& ws) {
 }
 
 /// Forgets the cached kinematics, so the next algorithm recomputes them (benchmarks; never needed
-/// for correctness).
+/// for correctness). The readers (center_of_mass, kinetic_energy, ...) then throw until
+/// forward_kinematics runs again.
 template <root_joint Root>
 void invalidate_kinematics(workspace<Root>& ws) {
   ws.scratch.level = 0;
