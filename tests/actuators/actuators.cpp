@@ -51,7 +51,7 @@ TEST_CASE("pd_actuator computes kp (target - q) - kd qdot per DOF, clamped to it
   const auto m = three_joint_chain();
   const Eigen::Vector3d kp(300, 50, 1000), kd(30, 5, 0);
   const pd_actuator pd(kp, kd);
-  auto st = pd.make_state(m);
+  const auto st = pd.make_state(m);
   REQUIRE(pd.command_size(m) == 3);
   REQUIRE(pd.input_kind() == command_kind::joint_target);
 
@@ -76,7 +76,7 @@ TEST_CASE("pd_actuator computes kp (target - q) - kd qdot per DOF, clamped to it
 TEST_CASE("pd_actuator: the limit is reached exactly and only beyond it", "[actuators][pd]") {
   const auto m = three_joint_chain();
   const pd_actuator pd = pd_actuator::uniform(m, 100.0, 0.0);
-  auto st = pd.make_state(m);
+  const auto st = pd.make_state(m);
   sim_state s = make_state(m);
   Eigen::Vector3d tau;
   // 100 * 0.05 = 5 N m: inside every limit.
@@ -93,7 +93,7 @@ TEST_CASE("pd_actuator with feed-forward adds the second half of the command bef
           "[actuators][pd]") {
   const auto m = three_joint_chain();
   const pd_actuator pd = pd_actuator::uniform(m, 10.0, 1.0, /*feedforward=*/true);
-  auto st = pd.make_state(m);
+  const auto st = pd.make_state(m);
   REQUIRE(pd.command_size(m) == 6);
   sim_state s = make_state(m);
   s.q.tail(3) << 0.1, 0.2, 0.3;
@@ -111,7 +111,7 @@ TEST_CASE("torque_actuator passes the command through, clamped; NaN stays NaN",
           "[actuators][torque]") {
   const auto m = three_joint_chain();
   const torque_actuator ta;
-  auto st = ta.make_state(m);
+  const auto st = ta.make_state(m);
   REQUIRE(ta.command_size(m) == 3);
   REQUIRE(ta.input_kind() == command_kind::joint_torque);
   sim_state s = make_state(m);

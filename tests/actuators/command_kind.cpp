@@ -63,10 +63,30 @@ struct unkinded_controller {
   struct state_type {};
 };
 
+/// An actuator whose torques change its state: not an actuator (torques must be pure).
+struct mutating_actuator {
+  using state_type = int;
+  template <root_joint Root>
+  state_type make_state(const model<Root>&) const {
+    return 0;
+  }
+  template <root_joint Root>
+  int command_size(const model<Root>& m) const {
+    return m.num_joint_dofs();
+  }
+  static constexpr command_kind input_kind() { return command_kind::joint_torque; }
+  template <root_joint Root>
+  void torques(const model<Root>&, const sim_state&, Eigen::Ref<const Eigen::VectorXd>,
+               state_type& calls, Eigen::Ref<Eigen::VectorXd>) const {
+    ++calls;
+  }
+};
+
 }  // namespace
 
 static_assert(controller<torque_controller, planar_root>);
 static_assert(actuator<dynamic_kind_actuator, planar_root>);
+static_assert(!actuator<mutating_actuator, planar_root>);  // torques takes the state by const&
 
 TEST_CASE("command kinds are named", "[actuators][command_kind]") {
   STATIC_REQUIRE(to_string(command_kind::joint_torque) == "joint_torque");

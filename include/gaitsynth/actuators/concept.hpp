@@ -3,7 +3,8 @@
 /// The actuator policy (docs/architecture.md): maps a controller command to joint torques.
 ///
 /// Valid expressions (A: actuator type, a: const A&, m: const model<Root>&, s: const sim_state&,
-/// cmd: Eigen::Ref<const Eigen::VectorXd>, st: A::state_type&, tau: Eigen::Ref<Eigen::VectorXd>):
+/// cmd: Eigen::Ref<const Eigen::VectorXd>, cst: const A::state_type&, st: A::state_type&,
+/// tau: Eigen::Ref<Eigen::VectorXd>):
 ///
 ///   A::state_type            its own evolving state (muscle activation, fiber length); an empty
 ///                            struct (no_actuator_state) for stateless actuators
@@ -13,11 +14,13 @@
 ///   a.input_kind()           -> command_kind, what the command means (command_kind.hpp); make
 ///                            it `static constexpr` when it is fixed by the type, so that
 ///                            check_command_kinds can compare it at compile time
-///   a.torques(m, s, cmd, st, tau)
+///   a.torques(m, s, cmd, cst, tau)
 ///                            writes the joint torques (size num_joint_dofs, N m; the root is
 ///                            unactuated) for state s and command cmd. A pure function of its
-///                            inputs (RBDL's Millard2016TorqueMuscle::calcJointTorque is const
-///                            with activation as an input); must not allocate.
+///                            inputs, the actuator state included, which it takes by const
+///                            reference (RBDL's Millard2016TorqueMuscle::calcJointTorque is const
+///                            with activation as an input); must not allocate. The state changes
+///                            only in the hooks below.
 ///
 /// Optional hooks for actuators with dynamics, detected with requires:
 ///   a.advance(m, s, cmd, st, dt)       advance st over one physics step (the actuator integrates
@@ -41,13 +44,13 @@ struct no_actuator_state {};
 template <class A, class Root>
 concept actuator = root_joint<Root> &&
     requires(const A& a, const model<Root>& m, const sim_state& s,
-             Eigen::Ref<const Eigen::VectorXd> cmd, typename A::state_type& st,
+             Eigen::Ref<const Eigen::VectorXd> cmd, const typename A::state_type& cst,
              Eigen::Ref<Eigen::VectorXd> tau) {
   typename A::state_type;
   { a.make_state(m) } -> std::same_as<typename A::state_type>;
   { a.command_size(m) } -> std::convertible_to<int>;
   { a.input_kind() } -> std::same_as<command_kind>;
-  a.torques(m, s, cmd, st, tau);
+  a.torques(m, s, cmd, cst, tau);
 };
 
 template <class A, class Root>

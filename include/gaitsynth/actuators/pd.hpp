@@ -128,7 +128,7 @@ struct pd_actuator {
 
   template <root_joint Root>
   void torques(const model<Root>& m, const sim_state& s, Eigen::Ref<const Eigen::VectorXd> cmd,
-               state_type&, Eigen::Ref<Eigen::VectorXd> tau) const {
+               const state_type&, Eigen::Ref<Eigen::VectorXd> tau) const {
     const int nj = m.num_joint_dofs();
     for (int j = 0; j < nj; ++j) {
       double t = pd_torque(kp[j], kd[j], cmd[j], s.q[Root::nq + j], s.v[Root::nv + j]);

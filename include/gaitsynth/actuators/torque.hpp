@@ -29,7 +29,7 @@ struct torque_actuator {
   /// non-finite state instead of silently clamping garbage to a limit).
   template <root_joint Root>
   void torques(const model<Root>& m, const sim_state&, Eigen::Ref<const Eigen::VectorXd> cmd,
-               state_type&, Eigen::Ref<Eigen::VectorXd> tau) const {
+               const state_type&, Eigen::Ref<Eigen::VectorXd> tau) const {
     const int nj = m.num_joint_dofs();
     for (int j = 0; j < nj; ++j) tau[j] = clamp_torque(cmd[j], m.dofs[j].torque_limit);
   }
