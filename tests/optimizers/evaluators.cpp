@@ -3,6 +3,8 @@
 #include <catch2/catch.hpp>
 
 #include <atomic>
+#include <chrono>
+#include <mutex>
 #include <set>
 #include <stdexcept>
 #include <thread>
@@ -87,4 +89,47 @@ TEST_CASE("evaluators check the output size", "[optimizers]") {
   thread_pool_evaluator pool(2);
   CHECK_THROWS_AS(pool.evaluate(f, std::span<const Eigen::VectorXd>(xs), std::span<double>(out)),
                   std::invalid_argument);
+}
+
+TEST_CASE("a worker-aware objective gets each worker's index, never two calls at once on one",
+          "[optimizers][evaluators]") {
+  const auto xs = batch(64);
+  for (unsigned threads : {1u, 2u, 4u}) {
+    thread_pool_evaluator pool(threads);
+    std::vector<std::atomic<int>> inside(threads);
+    std::atomic<int> overlaps{0}, out_of_range{0};
+    std::mutex m;
+    std::set<std::size_t> seen;
+    auto f = [&](const Eigen::VectorXd& x, std::size_t worker) {
+      if (worker >= threads) {
+        ++out_of_range;
+        return 0.0;
+      }
+      if (++inside[worker] != 1) ++overlaps;
+      {
+        std::lock_guard lock(m);
+        seen.insert(worker);
+      }
+      std::this_thread::sleep_for(std::chrono::microseconds(200));
+      --inside[worker];
+      return x.sum();  // the value does not depend on the worker
+    };
+    static_assert(worker_objective_function<decltype(f)>);
+    std::vector<double> out(xs.size()), ref(xs.size());
+    pool.evaluate(f, std::span<const Eigen::VectorXd>(xs), std::span<double>(out));
+    for (std::size_t k = 0; k < xs.size(); ++k) ref[k] = xs[k].sum();
+    INFO(threads << " threads");
+    CHECK(out == ref);
+    CHECK(overlaps == 0);
+    CHECK(out_of_range == 0);
+    CHECK(seen.count(0) == 1);  // the calling thread is worker 0
+  }
+  std::size_t last = 99;
+  auto g = [&](const Eigen::VectorXd&, std::size_t worker) {
+    last = worker;
+    return 1.0;
+  };
+  std::vector<double> out(xs.size());
+  serial_evaluator{}.evaluate(g, std::span<const Eigen::VectorXd>(xs), std::span<double>(out));
+  CHECK(last == 0);
 }

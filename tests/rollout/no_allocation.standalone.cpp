@@ -82,10 +82,15 @@ __attribute__((noinline)) void operator delete[](void* p, std::size_t, std::alig
 #include "gaitsynth/actuators/torque.hpp"
 #include "gaitsynth/contact/flat_terrain.hpp"
 #include "gaitsynth/contact/slope_terrain.hpp"
+#include "gaitsynth/controllers/nearest_neighbor_json.hpp"
+#include "gaitsynth/controllers/nearest_neighbor_synthesis.hpp"
 #include "gaitsynth/controllers/pose_hold.hpp"
 #include "gaitsynth/integrators/odeint.hpp"
 #include "gaitsynth/integrators/semi_implicit_euler.hpp"
+#include "gaitsynth/io/keyframes_json.hpp"
 #include "gaitsynth/objectives/distance.hpp"
+#include "gaitsynth/objectives/mass_distance.hpp"
+#include "gaitsynth/rollout/problem.hpp"
 #include "gaitsynth/rollout/rollout.hpp"
 #include "support/rollout_e2.hpp"
 
@@ -228,5 +233,53 @@ TEST_CASE("no heap allocation in the step loop of a rollout", "[rollout][allocat
     require_no_allocation(m, standing_pd(m, dt), pose_hold(m), flat_terrain(),
                           semi_implicit_euler(), opt);
     CHECK(tr.frames.size() == 61);
+  }
+}
+
+namespace {
+/// Allocations (operator new and Eigen mallocs) of one more prob.cost on a used context.
+template <class Problem>
+void require_allocation_free_cost(const Problem& prob, const Eigen::VectorXd& x, double horizon) {
+  auto ctx = prob.make_context();
+  const double first = prob.cost(x, horizon, ctx);  // set-up: sizes every buffer
+  const long n0 = g_news.load(), e0 = g_eigen_mallocs.load();
+  Eigen::internal::set_is_malloc_allowed(false);
+  const double second = prob.cost(x, horizon, ctx);
+  Eigen::internal::set_is_malloc_allowed(true);
+  CHECK(second == first);
+  CHECK(g_news.load() - n0 == 0);
+  CHECK(g_eigen_mallocs.load() - e0 == 0);
+}
+}  // namespace
+
+TEST_CASE("an evaluation on a reused problem context allocates nothing",
+          "[rollout][allocation][problem]") {
+  SECTION("7-link walker: nearest-neighbor controller, mass-distance cost, 3 start states") {
+    const auto m = sharon2005_human7();
+    const std::string dir = std::string(GAITSYNTH_SOURCE_DIR) + "/data/sharon2005/";
+    const auto target = load_keyframes(m, dir + "normal_walk.keyframes.json");
+    const auto ctrl = load_nearest_neighbor(m, dir + "normal_walk.controller.json");
+    rollout_options ro;
+    ro.initial_state = target.initial_state();
+    nn_problem prob{m,
+                    torque_actuator{},
+                    ctrl,
+                    mass_distance<planar_root>(m, target),
+                    flat_terrain{},
+                    semi_implicit_euler{},
+                    ro};
+    prob.starts = perturbed_starts(m, ro.initial_state);
+    require_allocation_free_cost(prob, prob.initial_parameters(), 0.5);
+  }
+  SECTION("3D humanoid: PD pose hold, pushes, RK4") {
+    const auto m = wang2009_humanoid();
+    const rollout_problem prob{m,
+                               standing_pd(m, dt),
+                               pose_hold(m),
+                               distance_objective(),
+                               flat_terrain{},
+                               odeint_rk4{},
+                               options_for(m, flat_terrain())};
+    require_allocation_free_cost(prob, standing_pose(m), 0.1);
   }
 }

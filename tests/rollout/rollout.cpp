@@ -168,7 +168,7 @@ struct lag_actuator {
   static constexpr command_kind input_kind() { return command_kind::joint_torque; }
   template <root_joint Root>
   void torques(const model<Root>&, const sim_state&, Eigen::Ref<const Eigen::VectorXd>,
-               state_type& a, Eigen::Ref<Eigen::VectorXd> tau) const {
+               const state_type& a, Eigen::Ref<Eigen::VectorXd> tau) const {
     tau = a;
   }
   template <root_joint Root>

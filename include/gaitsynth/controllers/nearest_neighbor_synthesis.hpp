@@ -33,121 +33,23 @@
 #include "gaitsynth/optimizers/evaluators.hpp"
 #include "gaitsynth/optimizers/parameter_space.hpp"
 #include "gaitsynth/optimizers/sds.hpp"
+#include "gaitsynth/rollout/problem.hpp"
+#include "gaitsynth/rollout/problem_cost.hpp"
+#include "gaitsynth/rollout/problem_with_variants.hpp"
 #include "gaitsynth/rollout/rollout.hpp"
 
 namespace gaitsynth {
 
-/// Everything needed to evaluate one parameter vector of a nearest-neighbor controller: the
+/// A rollout_problem (rollout/problem.hpp) whose controller is a nearest-neighbor controller: the
 /// character, actuator, the initial controller (its non-free node coordinates stay fixed), the
 /// objective, terrain, integrator and the rollout settings (initial state, dt, contact, falls).
-/// Copyable; evaluate() is const and thread-safe (each call has its own controller and scratch).
 template <root_joint Root, class Actuator, class Objective, terrain Terrain, class Integrator>
-struct nn_problem {
-  const model<Root>& character;
-  Actuator actuator;
-  nearest_neighbor_controller<Root> controller;
-  Objective objective;
-  Terrain ground;
-  Integrator integrator;
-  rollout_options options;  ///< its duration is replaced by the horizon of each evaluation
-  /// Start states of the cost (empty: options.initial_state alone). The paper evaluates from one
-  /// state, the first keyframe; its section VII suggests "multiple states that are distributed
-  /// along the desired trajectory" (target_start_states below) for robustness.
-  std::vector<sim_state> starts = {};
+using nn_problem = rollout_problem<Root, Actuator, nearest_neighbor_controller<Root>, Objective,
+                                   Terrain, Integrator>;
 
-  /// The controller with parameter vector x bound.
-  nearest_neighbor_controller<Root> controller_with(const Eigen::VectorXd& x) const {
-    auto c = controller;
-    c.bind(std::span<const double>(x.data(), static_cast<std::size_t>(x.size())));
-    return c;
-  }
-
-  /// One rollout of `horizon` seconds with parameters x (optionally recorded).
-  rollout_result evaluate(const Eigen::VectorXd& x, double horizon, trajectory* record = nullptr,
-                          int record_every = 1) const {
-    return evaluate_from(options.initial_state, x, horizon, record, record_every);
-  }
-
-  /// The optimization cost: the sum of the objective over the start states, each rollout `horizon`
-  /// seconds long. A diverged rollout makes it +infinity.
-  double cost(const Eigen::VectorXd& x, double horizon) const {
-    if (starts.empty()) return evaluate(x, horizon).cost;
-    double c = 0.0;
-    for (const sim_state& s : starts) c += evaluate_from(s, x, horizon).cost;
-    return c;
-  }
-
-  /// One rollout from start state s (its t is the target motion's time).
-  rollout_result evaluate_from(const sim_state& s, const Eigen::VectorXd& x, double horizon,
-                               trajectory* record = nullptr, int record_every = 1) const {
-    auto c = controller;
-    auto integ = integrator;
-    rollout_options o = options;
-    o.initial_state = s;
-    o.duration = horizon;
-    o.record = record;
-    o.record_every = record_every;
-    auto scratch = make_rollout_scratch(character);
-    return rollout(character, actuator, c, objective, ground, integ,
-                   std::span<const double>(x.data(), static_cast<std::size_t>(x.size())), o,
-                   scratch);
-  }
-
-  /// The initial parameter vector (the controller's current parameters).
-  Eigen::VectorXd initial_parameters() const {
-    const std::vector<double> p = controller.parameters();
-    return Eigen::Map<const Eigen::VectorXd>(p.data(), static_cast<Eigen::Index>(p.size()));
-  }
-};
-
-template <root_joint Root, class Actuator, class Objective, terrain Terrain, class Integrator>
-nn_problem(const model<Root>&, Actuator, nearest_neighbor_controller<Root>, Objective, Terrain,
-           Integrator, rollout_options)
-    -> nn_problem<Root, Actuator, Objective, Terrain, Integrator>;
-
-/// A problem whose cost also counts rollouts of the same controller in other situations: other
-/// terrains, bodies or start states that the controller cannot sense (section VII: "the addition of
-/// disturbances during the controller evaluation may encourage robustness"). It is the main
-/// problem (whose character, controller, starts and evaluate() it inherits: the 70 s check runs on
-/// the main problem) with the cost
-///
-///   C(x, T) = C_main(x, T) + variant_weight * sum_k C_k(x, T),
-///
-/// each variant being a problem of its own (a different Terrain type is fine). Only the main
-/// problem's controller is optimized; the variants' controllers must have the same parameter
-/// layout (same model DOFs and node count), checked on construction by
-/// make_problem_with_variants.
+/// The nearest-neighbor name of problem_with_variants (rollout/problem_with_variants.hpp).
 template <class Main, class Variant>
-struct nn_problem_with_variants : Main {
-  std::vector<Variant> variants;
-  double variant_weight = 1.0;
-
-  /// The main problem (itself possibly a problem with variants: they nest).
-  const Main& main() const { return *this; }
-
-  double cost(const Eigen::VectorXd& x, double horizon) const {
-    double c = Main::cost(x, horizon);
-    for (const Variant& v : variants) c += variant_weight * v.cost(x, horizon);
-    return c;
-  }
-};
-
-/// Builds an nn_problem_with_variants; throws std::invalid_argument if a variant's controller has a
-/// different number of parameters or the weight is not finite and >= 0.
-template <class Main, class Variant>
-nn_problem_with_variants<Main, Variant> make_problem_with_variants(Main main,
-                                                                   std::vector<Variant> variants,
-                                                                   double variant_weight = 1.0) {
-  check_argument(std::isfinite(variant_weight) && variant_weight >= 0.0,
-                 "make_problem_with_variants: variant_weight must be finite and >= 0, got ",
-                 variant_weight);
-  for (std::size_t k = 0; k < variants.size(); ++k)
-    check_argument(variants[k].controller.num_parameters() == main.controller.num_parameters(),
-                   "make_problem_with_variants: variant ", k, "'s controller has ",
-                   variants[k].controller.num_parameters(), " parameters, the main one ",
-                   main.controller.num_parameters());
-  return {std::move(main), std::move(variants), variant_weight};
-}
+using nn_problem_with_variants = problem_with_variants<Main, Variant>;
 
 struct nn_synthesis_options {
   /// Episode horizons T_sim (s), in order. Empty: 0.2, 0.4, ..., 2.0 (section V.C).
@@ -194,12 +96,13 @@ nn_synthesis_result synthesize_nearest_neighbor(const Problem& prob, nn_synthesi
   check_positive(o.parameter_range, "nn_synthesis_options::parameter_range (rad)");
   check_argument(o.threads >= 1, "nn_synthesis_options::threads must be >= 1");
   const Eigen::VectorXd x0 = prob.initial_parameters();
-  const std::vector<std::string> names = prob.controller.parameter_names();
+  const std::vector<std::string> names = prob.parameter_names();
   parameter_space space;
   for (Eigen::Index i = 0; i < x0.size(); ++i)
     space.add({names[static_cast<std::size_t>(i)], x0[i] - o.parameter_range,
                x0[i] + o.parameter_range, x0[i], 1.0});
   thread_pool_evaluator pool(o.threads);
+  problem_contexts<Problem> contexts(prob, pool.thread_count());  // one per worker, all episodes
   const auto t0 = std::chrono::steady_clock::now();
   nn_synthesis_result res;
   res.horizons = o.horizons;
@@ -217,11 +120,8 @@ nn_synthesis_result synthesize_nearest_neighbor(const Problem& prob, nn_synthesi
         so.stop.max_evaluations = o.evaluations_per_episode;
         return sds(space, so);
       },
-      [&](std::size_t k) {
-        const double T = o.horizons[k];
-        return [&prob, T](const Eigen::VectorXd& x) { return prob.cost(x, T); };
-      },
-      pool, o.run);
+      [&](std::size_t k) { return problem_cost<Problem>(prob, o.horizons[k], contexts); }, pool,
+      o.run);
   res.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   res.x = res.episodes.x;
   res.value = res.episodes.value;

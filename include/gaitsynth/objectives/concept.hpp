@@ -8,10 +8,11 @@
 ///
 ///   O::accumulator_type      running sums (a copyable value; created at set-up)
 ///   o.make_accumulator(m)    -> O::accumulator_type
-///   o.accumulate(acc, v)     once per physics step, after the integration step; the view
-///                            describes the interval [t, t + dt): the state at its start, the
-///                            torques and contact forces applied over it (zero-order hold). So a
-///                            rectangle rule sum_k f(view_k) dt integrates over the rollout.
+///   o.accumulate(acc, v)     once per physics step, after contact, the controller and the
+///                            actuator and before the integration step; the view describes the
+///                            interval [t, t + dt): the state at its start, the torques and
+///                            contact forces applied over it (zero-order hold). So a rectangle
+///                            rule sum_k f(view_k) dt integrates over the rollout.
 ///                            Must not allocate.
 ///   o.finish(acc, out)       -> double, the cost. Called once; out says why and when the rollout
 ///                            stopped (a fall, reached horizon) and where the COM started and
@@ -21,6 +22,8 @@
 ///   o.done(acc) -> bool                 stop early (stop_reason::objective) when true
 ///   o.term_names() -> range of strings  names of running terms the recorder stores per frame
 ///   o.terms(acc, std::span<double>)     their current values
+///   o.reset_accumulator(m, acc)         acc as make_accumulator(m) makes it, without allocating
+///                                       (a worker's next rollout; rollout/policy_states.hpp)
 ///
 /// Failed rollouts: when the state stops being finite the rollout does NOT call finish and sets the
 /// cost to +infinity (rollout/result.hpp); an objective never needs to handle NaN state. A

@@ -153,6 +153,15 @@ class mass_distance {
     return a;
   }
 
+  /// a as make_accumulator(m) returns it, keeping its memory (a worker's next rollout).
+  void reset_accumulator(const model<Root>& m, accumulator_type& a) const {
+    check_argument(a.target_q.size() == m.nq(),
+                   "mass_distance: accumulator was made for nq = ", a.target_q.size(), ", model '",
+                   m.name, "' has ", m.nq());
+    a.target_q.setZero();
+    a.integral = a.delta = a.delta_max = a.time = 0.0;
+  }
+
   /// delta(t) at the start of the step's interval, integrated with the rectangle rule (eq. 3).
   template <class View>
   requires std::derived_from<View, step_view<Root>>

@@ -198,7 +198,8 @@ class checkpoint_reader {
 };
 
 inline constexpr std::string_view checkpoint_magic = "gaitsynth-optimizer-checkpoint";
-inline constexpr std::int64_t checkpoint_version = 1;
+/// 2: the parameter names follow the optimizer's name (1: without them; still read).
+inline constexpr std::int64_t checkpoint_version = 2;
 
 /// Writes the optimizer's full state to `path` (atomically: `<path>.tmp`, then rename).
 template <optimizer O>
@@ -212,6 +213,9 @@ void save_checkpoint(const O& opt, const std::filesystem::path& path) {
     w.text("magic", checkpoint_magic);
     w.integer("version", checkpoint_version);
     w.text("optimizer", opt.name());
+    const auto& params = opt.space().parameters();
+    w.integer("parameters", static_cast<std::int64_t>(params.size()));
+    for (const auto& p : params) w.text("parameter", p.name);
     opt.save(w);
     w.text("end", "end");
     os.flush();
@@ -228,8 +232,26 @@ void load_checkpoint(O& opt, const std::filesystem::path& path) {
   if (!is) throw std::runtime_error("cannot read checkpoint '" + path.string() + "'");
   checkpoint_reader r(is);
   r.require_text("magic", checkpoint_magic);
-  r.require("version", checkpoint_version);
+  const std::int64_t version = r.integer("version");
+  if (version != 1 && version != checkpoint_version)
+    throw std::runtime_error("checkpoint '" + path.string() + "': version " +
+                             std::to_string(version) + " is not one this library reads (1, " +
+                             std::to_string(checkpoint_version) + ")");
   r.require_text("optimizer", opt.name());
+  if (version >= 2) {
+    // A checkpoint of another search space (other controller, other free DOFs) must not be
+    // resumed into this one, even when the dimensions agree: compare the names.
+    const auto& params = opt.space().parameters();
+    r.require("parameters", static_cast<std::int64_t>(params.size()));
+    for (std::size_t i = 0; i < params.size(); ++i) {
+      const std::string name = r.text("parameter");
+      if (name != params[i].name)
+        throw std::runtime_error("checkpoint '" + path.string() + "' was written for parameter " +
+                                 std::to_string(i) + " '" + name +
+                                 "', but this optimizer's parameter " + std::to_string(i) +
+                                 " is '" + params[i].name + "'");
+    }
+  }
   opt.load(r);
   r.require_text("end", "end");
 }

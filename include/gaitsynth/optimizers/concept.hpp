@@ -16,6 +16,7 @@
 #include <Eigen/Core>
 
 #include <concepts>
+#include <cstddef>
 #include <cstdint>
 #include <limits>
 #include <optional>
@@ -32,11 +33,35 @@ class checkpoint_reader;
 /// Something callable as `double(const Eigen::VectorXd& x)` with x in user (unnormalized)
 /// coordinates. Evaluators may call it from several threads at once: making concurrent calls safe
 /// (no shared mutable state, or per-thread workspaces) is the caller's responsibility.
+///
+/// A *worker-aware* objective is callable as `double(const Eigen::VectorXd& x, std::size_t
+/// worker)`: the evaluator passes the index of the worker (thread) making the call, in
+/// [0, thread_count()), and never runs two calls with the same index at once. The objective keeps
+/// one context (rollout scratch, controller copy) per worker and reuses it for every call on that
+/// worker, so an optimization allocates nothing per evaluation (rollout/problem_cost.hpp). The
+/// value must not depend on which worker computed it: that is what keeps results independent of
+/// the thread count. Evaluators call f(x, worker) when that is valid, f(x) otherwise.
 // (clang-format 14 mangles concept definitions)
 // clang-format off
 template <class F>
-concept objective_function = std::invocable<F&, const Eigen::VectorXd&> &&
+concept plain_objective_function = std::invocable<F&, const Eigen::VectorXd&> &&
     std::convertible_to<std::invoke_result_t<F&, const Eigen::VectorXd&>, double>;
+
+template <class F>
+concept worker_objective_function = std::invocable<F&, const Eigen::VectorXd&, std::size_t> &&
+    std::convertible_to<std::invoke_result_t<F&, const Eigen::VectorXd&, std::size_t>, double>;
+
+template <class F>
+concept objective_function = plain_objective_function<F> || worker_objective_function<F>;
+
+/// f(x) evaluated by worker `worker` (see worker_objective_function).
+template <objective_function F>
+double call_objective(F& f, const Eigen::VectorXd& x, std::size_t worker) {
+  if constexpr (worker_objective_function<F>)
+    return static_cast<double>(f(x, worker));
+  else
+    return static_cast<double>(f(x));
+}
 
 /// An evaluator computes `out[k] = f(xs[k])` for a batch of candidates. It must write each value
 /// into its own slot (never depend on the completion order), so that results are independent of

@@ -2,10 +2,12 @@
 /// \file evaluators.hpp
 /// Evaluator policies: how a batch of candidates gets its objective values.
 ///
-/// - serial_evaluator: one after the other, in the calling thread.
+/// - serial_evaluator: one after the other, in the calling thread (worker 0).
 /// - thread_pool_evaluator: a persistent pool; workers (and the calling thread) take candidates
 ///   by index from an atomic counter and write `out[k]` only, so the values, and therefore the
-///   whole optimization, are bit-identical whatever the thread count.
+///   whole optimization, are bit-identical whatever the thread count. The calling thread is
+///   worker 0, pool thread t is worker t; a worker-aware objective (optimizers/concept.hpp) gets
+///   that index and uses its own context on each.
 ///
 /// An evaluator that spreads a batch over processes (MPI) fits the same concept: rank 0's
 /// `evaluate` scatters `xs`, the other ranks call the objective, rank 0 gathers into `out`. The
@@ -35,7 +37,7 @@ struct serial_evaluator {
   void evaluate(F& f, std::span<const Eigen::VectorXd> xs, std::span<double> out) const {
     check_size(static_cast<std::ptrdiff_t>(out.size()), static_cast<std::ptrdiff_t>(xs.size()),
                "evaluator output");
-    for (std::size_t k = 0; k < xs.size(); ++k) out[k] = static_cast<double>(f(xs[k]));
+    for (std::size_t k = 0; k < xs.size(); ++k) out[k] = call_objective(f, xs[k], 0);
   }
   unsigned thread_count() const { return 1; }
 };
@@ -50,7 +52,7 @@ class thread_pool_evaluator {
     if (threads == 0) threads = std::max(1u, std::thread::hardware_concurrency());
     threads_ = threads;
     workers_.reserve(threads - 1);
-    for (unsigned t = 1; t < threads; ++t) workers_.emplace_back([this] { worker_loop(); });
+    for (unsigned t = 1; t < threads; ++t) workers_.emplace_back([this, t] { worker_loop(t); });
   }
   thread_pool_evaluator(const thread_pool_evaluator&) = delete;
   thread_pool_evaluator& operator=(const thread_pool_evaluator&) = delete;
@@ -84,9 +86,9 @@ class thread_pool_evaluator {
     {
       std::lock_guard lock(mutex_);
       job_ctx_ = &ctx;
-      job_fn_ = [](void* c, std::size_t k) {
+      job_fn_ = [](void* c, std::size_t k, std::size_t worker) {
         auto* cx = static_cast<context*>(c);
-        cx->out[k] = static_cast<double>((*cx->f)(cx->xs[k]));
+        cx->out[k] = call_objective(*cx->f, cx->xs[k], worker);
       };
       job_size_ = xs.size();
       next_.store(0, std::memory_order_relaxed);
@@ -94,7 +96,7 @@ class thread_pool_evaluator {
       ++epoch_;
     }
     wake_.notify_all();
-    run_items();  // the calling thread works too
+    run_items(0);  // the calling thread works too, as worker 0
     {
       std::unique_lock lock(mutex_);
       done_.wait(lock, [this] { return busy_ == 0; });
@@ -105,18 +107,18 @@ class thread_pool_evaluator {
   }
 
  private:
-  void run_items() {
+  void run_items(std::size_t worker) {
     for (;;) {
       const std::size_t k = next_.fetch_add(1, std::memory_order_relaxed);
       if (k >= job_size_) return;
       try {
-        job_fn_(job_ctx_, k);
+        job_fn_(job_ctx_, k, worker);
       } catch (...) {
         errors_[k] = std::current_exception();
       }
     }
   }
-  void worker_loop() {
+  void worker_loop(std::size_t worker) {
     std::uint64_t seen = 0;
     for (;;) {
       {
@@ -125,7 +127,7 @@ class thread_pool_evaluator {
         if (shutdown_) return;
         seen = epoch_;
       }
-      run_items();
+      run_items(worker);
       {
         std::lock_guard lock(mutex_);
         if (--busy_ == 0) done_.notify_one();
@@ -141,7 +143,7 @@ class thread_pool_evaluator {
   std::uint64_t epoch_ = 0;
   std::size_t busy_ = 0;
   void* job_ctx_ = nullptr;
-  void (*job_fn_)(void*, std::size_t) = nullptr;
+  void (*job_fn_)(void*, std::size_t, std::size_t) = nullptr;
   std::size_t job_size_ = 0;
   std::atomic<std::size_t> next_{0};
   std::vector<std::exception_ptr> errors_;

@@ -51,10 +51,12 @@
 #include "gaitsynth/dynamics/workspace.hpp"
 #include "gaitsynth/error.hpp"
 #include "gaitsynth/integrators/concept.hpp"
+#include "gaitsynth/model/fingerprint.hpp"
 #include "gaitsynth/model/model.hpp"
 #include "gaitsynth/model/state.hpp"
 #include "gaitsynth/objectives/concept.hpp"
 #include "gaitsynth/rollout/options.hpp"
+#include "gaitsynth/rollout/policy_states.hpp"
 #include "gaitsynth/rollout/recorder.hpp"
 #include "gaitsynth/rollout/result.hpp"
 #include "gaitsynth/rollout/termination.hpp"
@@ -63,7 +65,8 @@ namespace gaitsynth {
 
 /// Per-thread memory of rollout(): the dynamics workspace, the simulated state and every buffer
 /// the step loop writes. Made once (make_rollout_scratch) and reused by every rollout of a thread;
-/// rollout() resizes it only if the model's sizes differ.
+/// rollout() rebuilds it when the model differs from the one it was made for (by fingerprint:
+/// the workspace and the contact state cache model data, model/fingerprint.hpp).
 template <root_joint Root>
 struct rollout_scratch {
   workspace<Root> ws;
@@ -74,25 +77,24 @@ struct rollout_scratch {
   Eigen::VectorXd command;      ///< actuator command (its size is the actuator's command_size)
   contact_state contacts;       ///< penalty contact anchors, flags, forces, counts per body
   sensor_history history;       ///< delayed sensor samples
-  int nq = -1, nv = -1, nb = -1, nc = -1;
+  std::uint64_t model_fingerprint = 0;  ///< of the model ws and contacts were made for
+  bool prepared = false;
 };
 
-/// Sizes a scratch for model m (allocates; set-up only).
+/// Sizes a scratch for model m, unless it was made for a model with the same fingerprint
+/// (allocates only then; set-up).
 template <root_joint Root>
 void prepare_rollout_scratch(const model<Root>& m, rollout_scratch<Root>& s) {
-  if (s.nq == m.nq() && s.nv == m.nv() && s.nb == m.num_bodies() &&
-      s.nc == static_cast<int>(m.contact_points.size()))
-    return;
+  const std::uint64_t fp = model_fingerprint(m);
+  if (s.prepared && s.model_fingerprint == fp) return;
   s.ws = make_workspace(m);
   s.state = make_state(m);
   s.tau = Eigen::VectorXd::Zero(m.nv());
   s.tau_passive = Eigen::VectorXd::Zero(m.nv());
   s.tau_total = Eigen::VectorXd::Zero(m.nv());
   s.contacts = make_contact_state(m);
-  s.nq = m.nq();
-  s.nv = m.nv();
-  s.nb = m.num_bodies();
-  s.nc = static_cast<int>(m.contact_points.size());
+  s.model_fingerprint = fp;
+  s.prepared = true;
 }
 
 template <root_joint Root>
@@ -158,7 +160,8 @@ template <root_joint Root, class Actuator, class C, class Objective, terrain Ter
 rollout_result rollout_impl(const model<Root>& m, const Actuator& act, C& ctrl,
                             const Objective& obj, const Terrain& ground, Integrator& integ,
                             std::span<const double> params, const rollout_options& opt,
-                            rollout_scratch<Root>& scr) {
+                            rollout_scratch<Root>& scr,
+                            rollout_policy_states<Actuator, C, Objective>& states) {
   using actuator_state = typename Actuator::state_type;
   // ---------------------------------------------------------------- set-up (may allocate/throw)
   check_positive(opt.dt, "rollout_options::dt (physics timestep, s)");
@@ -174,13 +177,13 @@ rollout_result rollout_impl(const model<Root>& m, const Actuator& act, C& ctrl,
   const double period = static_cast<double>(ctrl.period());
   check_argument(std::isfinite(period) && period >= 0.0,
                  "controller period must be finite and >= 0 s, got ", period);
+  prepare_rollout_scratch(m, scr);
   if constexpr (controller_with_output_kind<C>)
     check_argument(ctrl.output_kind() == act.input_kind(), "controller output kind ",
                    static_cast<int>(ctrl.output_kind()),
                    " does not match the actuator's input kind ", static_cast<int>(act.input_kind()),
                    " (0 joint_torque, 1 joint_target, 2 excitation)");
 
-  prepare_rollout_scratch(m, scr);
   workspace<Root>& ws = scr.ws;
   sim_state& s = scr.state;
   if (opt.initial_state.q.size() == 0) {
@@ -205,16 +208,12 @@ rollout_result rollout_impl(const model<Root>& m, const Actuator& act, C& ctrl,
   normalize_configuration(m, s.q);
   const double t0 = s.t;
 
-  actuator_state act_state = act.make_state(m);
-  // d(actuator state)/dt, sized at set-up (a copy), only for actuators with a derivative hook.
-  [[maybe_unused]] auto act_rate = [&] {
-    if constexpr (actuator_with_derivative<Actuator, Root>)
-      return act_state;
-    else
-      return 0;
-  }();
-  typename C::state_type ctrl_state = ctrl.make_state(m);
-  typename Objective::accumulator_type acc = obj.make_accumulator(m);
+  states.prepare(m, scr.model_fingerprint, act, ctrl, obj);
+  actuator_state& act_state = *states.actuator;
+  // d(actuator state)/dt (used only by actuators with a derivative hook).
+  [[maybe_unused]] actuator_state& act_rate = *states.actuator_rate;
+  typename C::state_type& ctrl_state = *states.controller;
+  typename Objective::accumulator_type& acc = *states.objective;
   const int ncmd = static_cast<int>(act.command_size(m));
   check_argument(ncmd >= 0, "actuator command_size must be >= 0, got ", ncmd);
   if (scr.command.size() != ncmd) scr.command.resize(ncmd);
@@ -236,9 +235,10 @@ rollout_result rollout_impl(const model<Root>& m, const Actuator& act, C& ctrl,
 
   trajectory_recorder rec;
   {
-    std::vector<std::string> names;
+    std::vector<std::string> names;  // (only when recording: a worker's rollouts allocate nothing)
     if constexpr (objective_with_terms<Objective>)
-      for (const auto& n : obj.term_names()) names.emplace_back(n);
+      if (opt.record)
+        for (const auto& n : obj.term_names()) names.emplace_back(n);
     const std::int64_t frames = opt.record ? n_steps / std::max(opt.record_every, 1) + 1 : 0;
     rec.start(opt.record, m, opt.record_every, frames, names, opt.pushes.size());
   }
@@ -461,16 +461,34 @@ requires actuator<Actuator, Root> &&
                                rollout_scratch<Root>& scr) {
   using C = std::remove_cvref_t<Controller>;
   using I = std::remove_cvref_t<Integrator>;
+  rollout_policy_states<Actuator, C, Objective> states;  // made anew: set-up, may allocate
   if constexpr (std::is_const_v<std::remove_reference_t<Controller>> ||
                 std::is_const_v<std::remove_reference_t<Integrator>>) {
     // bind() changes the controller and step() the integrator's scratch: work on copies of
     // const ones (set-up; may allocate).
     C c(ctrl);
     I i(integ);
-    return detail::rollout_impl(m, act, c, obj, ground, i, params, opt, scr);
+    return detail::rollout_impl(m, act, c, obj, ground, i, params, opt, scr, states);
   } else {
-    return detail::rollout_impl(m, act, ctrl, obj, ground, integ, params, opt, scr);
+    return detail::rollout_impl(m, act, ctrl, obj, ground, integ, params, opt, scr, states);
   }
+}
+
+/// Runs one rollout with the policies' states kept in `states` from earlier rollouts (reset in
+/// place where the policies allow it: rollout/policy_states.hpp), so that repeated rollouts of a
+/// worker allocate nothing. The controller and integrator are used in place (not const).
+template <root_joint Root, class Actuator, class Controller, class Objective, terrain Terrain,
+          class Integrator>
+requires actuator<Actuator, Root> &&
+    controller<Controller, Root, sensors_with<Root, typename Actuator::state_type>> &&
+    objective<Objective, Root, step_view_with<Root, typename Actuator::state_type>> &&
+    integrator<Integrator, Root>
+        rollout_result rollout(const model<Root>& m, const Actuator& act, Controller& ctrl,
+                               const Objective& obj, const Terrain& ground, Integrator& integ,
+                               std::span<const double> params, const rollout_options& opt,
+                               rollout_scratch<Root>& scr,
+                               rollout_policy_states<Actuator, Controller, Objective>& states) {
+  return detail::rollout_impl(m, act, ctrl, obj, ground, integ, params, opt, scr, states);
 }
 
 /// Convenience overload for an Eigen parameter vector.
