@@ -3,21 +3,22 @@
 /// The nearest-neighbor controller of Sharon & van de Panne 2005 (section III).
 ///
 /// The controller is a set of nodes w_1..w_n. Node i has a location zeta_i in the input space (a
-/// pose: global torso orientation and joint angles) and an output mu_i (a target pose). Each control
-/// step the active node is the nearest neighbour of the current simulated pose zeta_t (eq. 1)
+/// pose: global torso orientation and joint angles) and an output mu_i (a target pose). Each
+/// control step the active node is the nearest neighbour of the current simulated pose zeta_t
+/// (eq. 1)
 ///
 ///     a = argmin_i || w^T (zeta_t - zeta_i) ||_2       (w: per-coordinate weights, elementwise),
 ///
-/// and its target pose drives PD servos at the joints (|tau| <= 370 N m in the paper). A torso servo
-/// on the hip of the current stance leg drives the torso to the target's global orientation:
+/// and its target pose drives PD servos at the joints (|tau| <= 370 N m in the paper). A torso
+/// servo on the hip of the current stance leg drives the torso to the target's global orientation:
 /// the stance hip's torque is the reaction of the torque a PD servo would apply to the torso,
 ///     tau_hip = -(k_t (theta_d - theta_torso) - d_t omega_torso) / (hip axis . y),
 /// minus the swing hip's torque (which reacts on the torso too) when compensate_swing_hip is set.
 /// The stance leg is the foot that touches the ground when exactly one does (stance_from_contacts),
 /// else the active node's label (from the keyframes' "stance").
 ///
-/// Symmetry (section VI.A): with `symmetric`, node i + n/2 is the left/right mirror image of node i,
-/// so only the first n/2 nodes are free. Their free coordinates (the `free_dofs` of the location
+/// Symmetry (section VI.A): with `symmetric`, node i + n/2 is the left/right mirror image of node
+/// i, so only the first n/2 nodes are free. Their free coordinates (the `free_dofs` of the location
 /// and of the output; 6 + 6 = 12 per node for the 7-link human) form the parameter vector, node by
 /// node: [node0 location..., node0 output..., node1 location..., ...].
 ///
@@ -30,10 +31,11 @@
 /// the cyclic target motion (period P), zeta_i = pose(t_i) and mu_i = zeta_{i+1} = pose(t_{i+1}):
 /// each node drives the character towards the next node's location.
 ///
-/// Output modes: joint_torque (with torque_actuator) computes the servo torques here, clamped to
-/// `torque_limit`; joint_target (with pd_actuator, whose gains must then equal this controller's
-/// kp/kd) outputs the target angles, the stance hip's being the angle whose PD torque equals the
-/// torso servo's torque: q_hip + (tau_hip + kd qdot_hip) / kp. Works with any model and root.
+/// Output modes: joint_torque (with torque_actuator) computes the servo torques here (pd_torque,
+/// actuators/pd_law.hpp), clamped to `torque_limit`; joint_target (with pd_actuator, whose gains
+/// must then equal this controller's kp/kd: nothing checks it) outputs the target angles, the
+/// stance hip's being the angle whose PD torque equals the torso servo's torque:
+/// pd_target_for_torque = q_hip + (tau_hip + kd qdot_hip) / kp. Works with any model and root.
 #include <Eigen/Core>
 #include <algorithm>
 #include <cmath>
@@ -74,19 +76,20 @@ struct nearest_neighbor_options {
   command_kind output = command_kind::joint_torque;
   /// PD servo gains per joint DOF (size num_joint_dofs); empty: default_kp / default_kd.
   std::vector<double> kp, kd;
-  double default_kp = 600.0;  ///< N m / rad
-  double default_kd = 60.0;   ///< N m s / rad
+  double default_kp = 600.0;    ///< N m / rad
+  double default_kd = 60.0;     ///< N m s / rad
   double torque_limit = 370.0;  ///< N m, clamp of every servo torque (joint_torque mode)
   /// Torso servo on the stance hip. Needs a stance side per node (from the keyframes' "stance").
   bool torso_servo = true;
-  std::string torso_body;                   ///< empty: the root body
+  std::string torso_body;                             ///< empty: the root body
   std::string left_hip = "lhip", right_hip = "rhip";  ///< the hip DOFs the servo drives
-  double torso_kp = 1000.0;  ///< N m / rad
-  double torso_kd = 100.0;   ///< N m s / rad
+  double torso_kp = 1000.0;                           ///< N m / rad
+  double torso_kd = 100.0;                            ///< N m s / rad
   /// Stance leg from the feet's contacts when exactly one foot touches the ground (the node's
   /// stance label otherwise): the torso servo then acts on the leg that really supports the body
   /// even when the walk runs early or late against the nodes. Off by default: the paper's stance
-  /// leg is the node's (our optimizations walked worse with it on, docs/reproductions/sharon2005.md).
+  /// leg is the node's (our optimizations walked worse with it on: see
+  /// docs/reproductions/sharon2005.md).
   std::string left_foot = "lfoot", right_foot = "rfoot";
   bool stance_from_contacts = false;
   /// Subtract the swing hip's torque from the stance hip's, so that the torso feels exactly the
@@ -111,8 +114,8 @@ class nearest_neighbor_controller {
  public:
   using options = nearest_neighbor_options;
   struct state_type {
-    int active = -1;               ///< active node, -1 before the first command
-    std::int64_t switches = 0;     ///< number of changes of the active node
+    int active = -1;            ///< active node, -1 before the first command
+    std::int64_t switches = 0;  ///< number of changes of the active node
     std::int64_t commands = 0;
   };
 
@@ -142,13 +145,13 @@ class nearest_neighbor_controller {
   }
 
   /// Section V.A: nodes along the target motion, each output the next node's pose.
-  nearest_neighbor_controller(const model<Root>& m, const keyframe_motion<Root>& target,
-                              options o)
+  nearest_neighbor_controller(const model<Root>& m, const keyframe_motion<Root>& target, options o)
       : opt_(std::move(o)) {
     setup(m);
-    check_argument(target.nq() == m.nq(), "nearest_neighbor: target motion has nq = ",
-                   target.nq(), ", model '", m.name, "' has ", m.nq());
-    check_argument(std::isfinite(opt_.first_node_time), "nearest_neighbor: first_node_time is not finite");
+    check_argument(target.nq() == m.nq(), "nearest_neighbor: target motion has nq = ", target.nq(),
+                   ", model '", m.name, "' has ", m.nq());
+    check_argument(std::isfinite(opt_.first_node_time),
+                   "nearest_neighbor: first_node_time is not finite");
     check_argument(!opt_.symmetric || target.symmetric(),
                    "nearest_neighbor: symmetric nodes need a symmetric (mirrored) target motion");
     const int n = opt_.num_nodes;
@@ -195,7 +198,8 @@ class nearest_neighbor_controller {
   std::vector<std::string> parameter_names() const {
     std::vector<std::string> n;
     for (int i = 0; i < num_free_nodes(); ++i) {
-      for (int k : free_in_) n.push_back("node" + std::to_string(i) + ".location." + input_names_[k]);
+      for (int k : free_in_)
+        n.push_back("node" + std::to_string(i) + ".location." + input_names_[k]);
       for (int j : free_out_) n.push_back("node" + std::to_string(i) + ".output." + dof_names_[j]);
     }
     return n;
@@ -258,7 +262,7 @@ class nearest_neighbor_controller {
   }
 
   template <class S>
-    requires std::derived_from<S, sensors<Root>>
+  requires std::derived_from<S, sensors<Root>>
   void command(const S& s, state_type& st, Eigen::Ref<Eigen::VectorXd> cmd) const {
     ++st.commands;
     const Eigen::VectorXd& q = s.q();
@@ -324,9 +328,9 @@ class nearest_neighbor_controller {
                    "nearest_neighbor: a symmetric controller needs an even num_nodes, got ", n);
     check_argument(std::isfinite(opt_.period) && opt_.period >= 0,
                    "nearest_neighbor: period must be finite and >= 0, got ", opt_.period);
-    check_argument(opt_.output == command_kind::joint_torque ||
-                       opt_.output == command_kind::joint_target,
-                   "nearest_neighbor: output must be joint_torque or joint_target");
+    check_argument(
+        opt_.output == command_kind::joint_torque || opt_.output == command_kind::joint_target,
+        "nearest_neighbor: output must be joint_torque or joint_target");
     for (const auto& d : m.dofs) dof_names_.push_back(d.name);
     // Input coordinates.
     std::vector<std::string> in = opt_.input;
@@ -416,8 +420,8 @@ class nearest_neighbor_controller {
                        std::isfinite(opt_.torso_kd) && opt_.torso_kd >= 0,
                    "nearest_neighbor: torso gains must be finite and >= 0, got ", opt_.torso_kp,
                    ", ", opt_.torso_kd);
-    check_argument(opt_.max_advance < n, "nearest_neighbor: max_advance must be < num_nodes (",
-                   n, "), got ", opt_.max_advance);
+    check_argument(opt_.max_advance < n, "nearest_neighbor: max_advance must be < num_nodes (", n,
+                   "), got ", opt_.max_advance);
     torso_ = opt_.torso_body.empty() ? 0 : m.body_index(opt_.torso_body);
     if (opt_.stance_from_contacts && !opt_.left_foot.empty() && !opt_.right_foot.empty()) {
       lfoot_ = m.body_index(opt_.left_foot);
@@ -435,7 +439,8 @@ class nearest_neighbor_controller {
                        hip_axis_y_[s]);
       if (opt_.output == command_kind::joint_target)
         for (int j : {lhip_, rhip_})
-          check_argument(kp_[j] > 0, "nearest_neighbor: joint_target mode needs kp > 0 at the hip '",
+          check_argument(kp_[j] > 0,
+                         "nearest_neighbor: joint_target mode needs kp > 0 at the hip '",
                          dof_names_[j], "' (the torso servo's equivalent target divides by it)");
     }
     loc_ = Eigen::MatrixXd::Zero(ni, n);
@@ -450,8 +455,7 @@ class nearest_neighbor_controller {
     if (!opt_.symmetric) return;
     const int h = opt_.num_nodes / 2;
     for (int i = 0; i < h; ++i) {
-      for (int k = 0; k < num_inputs(); ++k)
-        loc_(in_mirror_[k], h + i) = in_sign_[k] * loc_(k, i);
+      for (int k = 0; k < num_inputs(); ++k) loc_(in_mirror_[k], h + i) = in_sign_[k] * loc_(k, i);
       for (int j = 0; j < nj_; ++j) out_(j, h + i) = mirror_sign_[j] * out_(mirror_dof_[j], i);
       torso_pitch_[h + i] = torso_pitch_[i];
       stance_[h + i] = opposite(stance_[i]);
