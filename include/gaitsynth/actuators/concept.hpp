@@ -31,6 +31,7 @@
 /// the state and command the torques were computed from (zero-order hold, like the torques).
 #include <Eigen/Core>
 #include <concepts>
+#include <span>
 
 #include "gaitsynth/actuators/command_kind.hpp"
 #include "gaitsynth/model/model.hpp"
@@ -67,6 +68,17 @@ concept actuator_with_derivative = requires(const A& a, const model<Root>& m, co
                                             typename A::state_type& dst) {
   a.derivative(m, s, cmd, st, dst);
   st += 1.0 * dst;
+};
+
+/// Optional: values the actuator exposes to controllers, now and with neural delays
+/// (sensors::sensed, sensors::delayed_sensed): normalized muscle force and fiber length for the
+/// reflexes of Wang et al. 2012. sensed_size(m) at set-up; sense(m, st, out) once per physics step
+/// before the controller, writing sensed_size(m) values; must not allocate.
+template <class A, class Root>
+concept actuator_with_sensing = requires(const A& a, const model<Root>& m,
+                                         const typename A::state_type& st, std::span<double> out) {
+  { a.sensed_size(m) } -> std::convertible_to<int>;
+  a.sense(m, st, out);
 };
 
 }  // namespace gaitsynth

@@ -8,16 +8,20 @@
 ///   - per body: rotation R_world_body, origin position (m), angular velocity (rad/s, world axes),
 ///     origin linear velocity (m/s);
 ///   - per body: number of its contact points touching the terrain; per contact point: touching
-///   flag
-///     (sampled from the previous physics step's contact evaluation, i.e. what a foot sensor
-///     reports);
+///     flag (from this physics step's contact evaluation, which runs before the controller: what
+///     a foot sensor reports now);
 ///   - whole-body COM and COM velocity, and the COM relative to any body point (the stance ankle of
 ///     SIMBICON-style balance feedback, Wang et al. 2009 Sec. 3; d in Wang et al. 2012 Sec. 4.3);
-///   - time-delayed q, v and contact counts (neural delays of 5-20 ms, Wang et al. 2012 Sec. 4:
+///   - time-delayed q, v, contact counts, COM and COM velocity, body rotations and the
+///     actuator's sensed values (neural delays of 5-20 ms, Wang et al. 2012 Sec. 4:
 ///     "time-delayed features of the body"), read from a ring buffer the rollout fills every
-///     physics step. A controller that needs them declares `double max_sensor_delay() const` (s);
-///     the rollout then sizes the buffer at set-up. Before enough history exists, the oldest sample
-///     (the initial state) is returned, as if the character had been still before t0.
+///     physics step (controllers/sensor_history.hpp). A controller that needs them declares
+///     `double max_sensor_delay() const` (s); the rollout then sizes the buffer at set-up. Before
+///     enough history exists, the oldest sample (the initial state) is returned, as if the
+///     character had been still before t0;
+///   - read-only views of what the rollout already computed this step: the dynamics workspace
+///     (every body's pose and velocity, the spatial scratch) and the contact state (per-point
+///     positions, depths, normals and forces), so a controller never recomputes them.
 ///
 /// Actuators with their own state (muscles) are visible through sensors_with<Root, ActuatorState>,
 /// which derives from sensors<Root>: a controller taking `const sensors<Root>&` accepts both.
@@ -26,58 +30,13 @@
 #include <cmath>
 #include <span>
 
+#include "gaitsynth/contact/penalty_contact.hpp"
+#include "gaitsynth/controllers/sensor_history.hpp"
+#include "gaitsynth/dynamics/workspace.hpp"
 #include "gaitsynth/model/model.hpp"
 #include "gaitsynth/spatial/types.hpp"
 
 namespace gaitsynth {
-
-/// Ring buffer of the last `capacity` physics-step samples of q, v and per-body contact counts.
-/// Sized once (reset), then push() never allocates.
-class sensor_history {
- public:
-  /// Sizes the buffer (allocates; set-up only). capacity 0 disables the history.
-  void reset(int nq, int nv, int num_bodies, int capacity) {
-    capacity_ = std::max(capacity, 0);
-    q_.resize(nq, capacity_);
-    v_.resize(nv, capacity_);
-    counts_.resize(num_bodies, capacity_);
-    head_ = -1;
-    size_ = 0;
-  }
-  int capacity() const { return capacity_; }
-  int size() const { return size_; }
-
-  /// Appends the newest sample (overwrites the oldest when full). No allocation.
-  template <class Q, class V>
-  void push(const Q& q, const V& v, std::span<const int> contact_count) {
-    if (capacity_ == 0) return;
-    head_ = (head_ + 1) % capacity_;
-    q_.col(head_) = q;
-    v_.col(head_) = v;
-    for (int b = 0; b < counts_.rows(); ++b) counts_(b, head_) = contact_count[b];
-    size_ = std::min(size_ + 1, capacity_);
-  }
-
-  /// Column index of the sample `back` steps before the newest, clamped to the oldest stored one.
-  int index(int back) const {
-    back = std::clamp(back, 0, std::max(size_ - 1, 0));
-    return ((head_ - back) % capacity_ + capacity_) % capacity_;
-  }
-  auto q(int back) const { return q_.col(index(back)); }
-  auto v(int back) const { return v_.col(index(back)); }
-  int contact_count(int back, int body) const { return counts_(body, index(back)); }
-
- private:
-  Eigen::MatrixXd q_, v_;
-  Eigen::Matrix<int, Eigen::Dynamic, Eigen::Dynamic> counts_;
-  int capacity_ = 0, head_ = -1, size_ = 0;
-};
-
-/// Number of history samples a delay needs at timestep dt (delay 0 needs 1: the current sample).
-inline int history_capacity(double max_delay, double dt) {
-  if (!(max_delay > 0.0) || !(dt > 0.0)) return 0;
-  return static_cast<int>(std::ceil(max_delay / dt - 1e-9)) + 1;
-}
 
 /// The sensed state handed to controller::command. Public members are filled by the rollout (or by
 /// a test); the member functions are conveniences over them. Never owns memory.
@@ -98,8 +57,15 @@ struct sensors {
   vec3 com = vec3::Zero();                        ///< whole-body centre of mass, world, m
   vec3 com_velocity = vec3::Zero();               ///< m/s
   const sensor_history* history = nullptr;  ///< delayed samples (may be null: no delay available)
+  const gaitsynth::workspace<Root>* workspace_ptr =
+      nullptr;                                  ///< this step's kinematics (read only)
+  const contact_state* contacts_ptr = nullptr;  ///< this step's contact evaluation (read only)
+  std::span<const double> sensed;  ///< the actuator's sensed values now (actuators/concept.hpp)
 
   const gaitsynth::model<Root>& model() const { return *model_ptr; }
+  /// The rollout's workspace after this step's forward kinematics of (q, v).
+  const gaitsynth::workspace<Root>& workspace() const { return *workspace_ptr; }
+  const contact_state& contacts() const { return *contacts_ptr; }
   const Eigen::VectorXd& q() const { return *q_ptr; }
   const Eigen::VectorXd& v() const { return *v_ptr; }
   int num_joint_dofs() const { return model_ptr->num_joint_dofs(); }
@@ -146,6 +112,25 @@ struct sensors {
   int delayed_contact_count(int b, double delay) const {
     if (history == nullptr || history->size() == 0) return contact_count[b];
     return history->contact_count(delay_steps(delay), b);
+  }
+  vec3 delayed_com(double delay) const {
+    if (history == nullptr || history->size() == 0) return com;
+    return history->com(delay_steps(delay));
+  }
+  vec3 delayed_com_velocity(double delay) const {
+    if (history == nullptr || history->size() == 0) return com_velocity;
+    return history->com_velocity(delay_steps(delay));
+  }
+  mat3 delayed_body_rotation(int b, double delay) const {
+    if (history == nullptr || history->size() == 0) return body_rotation[b];
+    return history->body_rotation(delay_steps(delay), b);
+  }
+  /// The actuator's sensed values `delay` seconds ago (e.g. normalized muscle force, fiber length).
+  Eigen::Ref<const Eigen::VectorXd> delayed_sensed(double delay) const {
+    if (history == nullptr || history->size() == 0)
+      return Eigen::Map<const Eigen::VectorXd>(sensed.data(),
+                                               static_cast<Eigen::Index>(sensed.size()));
+    return history->sensed(delay_steps(delay));
   }
 };
 

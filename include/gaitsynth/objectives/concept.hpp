@@ -34,6 +34,8 @@
 #include <span>
 #include <utility>
 
+#include "gaitsynth/contact/penalty_contact.hpp"
+#include "gaitsynth/dynamics/workspace.hpp"
 #include "gaitsynth/model/model.hpp"
 #include "gaitsynth/rollout/termination.hpp"
 #include "gaitsynth/spatial/types.hpp"
@@ -63,8 +65,16 @@ struct step_view {
   bool toe_top_contact = false;                    ///< the top of some toe touches (a stumble)
   vec3 com = vec3::Zero();                         ///< world, m
   vec3 com_velocity = vec3::Zero();                ///< world, m/s
+  const gaitsynth::workspace<Root>* workspace_ptr =
+      nullptr;                                  ///< kinematics of (q, v) at t (read only)
+  const contact_state* contacts_ptr = nullptr;  ///< contact evaluation at t (read only)
 
   const gaitsynth::model<Root>& model() const { return *model_ptr; }
+  /// The rollout's workspace after forward kinematics of (q, v) at t: body poses and
+  /// velocities, and the spatial momenta that centroidal_momentum and kinetic_energy sum, so an
+  /// objective (E_ang of Wang et al. 2009) reads them without recomputing the kinematics.
+  const gaitsynth::workspace<Root>& workspace() const { return *workspace_ptr; }
+  const contact_state& contacts() const { return *contacts_ptr; }
   const Eigen::VectorXd& q() const { return *q_ptr; }
   const Eigen::VectorXd& v() const { return *v_ptr; }
   const Eigen::VectorXd& tau() const { return *tau_ptr; }

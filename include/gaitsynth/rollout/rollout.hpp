@@ -77,6 +77,7 @@ struct rollout_scratch {
   Eigen::VectorXd command;      ///< actuator command (its size is the actuator's command_size)
   contact_state contacts;       ///< penalty contact anchors, flags, forces, counts per body
   sensor_history history;       ///< delayed sensor samples
+  Eigen::VectorXd sensed;       ///< the actuator's sensed values this step (actuator_with_sensing)
   std::uint64_t model_fingerprint = 0;  ///< of the model ws and contacts were made for
   bool prepared = false;
 };
@@ -231,7 +232,14 @@ rollout_result rollout_impl(const model<Root>& m, const Actuator& act, C& ctrl,
   const double delay = detail::sensor_delay_of(ctrl);
   check_argument(std::isfinite(delay) && delay >= 0.0,
                  "controller max_sensor_delay must be finite and >= 0 s, got ", delay);
-  scr.history.reset(m.nq(), m.nv(), m.num_bodies(), history_capacity(delay, dt));
+  int num_sensed = 0;
+  if constexpr (actuator_with_sensing<Actuator, Root>) {
+    num_sensed = static_cast<int>(act.sensed_size(m));
+    check_argument(num_sensed >= 0, "actuator sensed_size must be >= 0, got ", num_sensed);
+  }
+  if (scr.sensed.size() != num_sensed) scr.sensed.resize(num_sensed);
+  scr.sensed.setZero();
+  scr.history.reset(m.nq(), m.nv(), m.num_bodies(), history_capacity(delay, dt), num_sensed);
 
   trajectory_recorder rec;
   {
@@ -250,9 +258,25 @@ rollout_result rollout_impl(const model<Root>& m, const Actuator& act, C& ctrl,
     const double h0 = res.com_initial.z() - ground.height(res.com_initial.x(), res.com_initial.y());
     res.fall_height = opt.fall_height > 0.0 ? opt.fall_height : opt.fall_fraction * h0;
   }
-  if (scr.history.capacity() > 0)  // as if the character had been still before t0
-    for (int i = 0; i < scr.history.capacity(); ++i)
-      scr.history.push(s.q, s.v, std::span<const int>(scr.contacts.points_touching));
+  // What the history stores each step (the pointers and spans stay valid: no reallocation).
+  sensor_sample sample;
+  sample.q = &s.q;
+  sample.v = &s.v;
+  sample.contact_count = scr.contacts.points_touching;
+  sample.body_rotation = ws.body_rotation;
+  sample.sensed =
+      std::span<const double>(scr.sensed.data(), static_cast<std::size_t>(scr.sensed.size()));
+  auto sense_actuator = [&] {
+    if constexpr (actuator_with_sensing<Actuator, Root>)
+      act.sense(m, std::as_const(act_state),
+                std::span<double>(scr.sensed.data(), static_cast<std::size_t>(num_sensed)));
+  };
+  if (scr.history.capacity() > 0) {  // as if the character had been still before t0
+    sense_actuator();
+    sample.com = res.com_initial;
+    sample.com_velocity = com_velocity(m, ws);
+    for (int i = 0; i < scr.history.capacity(); ++i) scr.history.push(sample);
+  }
 
   sensors_with<Root, actuator_state> sen;
   sen.model_ptr = &m;
@@ -266,6 +290,9 @@ rollout_result rollout_impl(const model<Root>& m, const Actuator& act, C& ctrl,
   sen.contact_count = scr.contacts.points_touching;
   sen.contact_active = scr.contacts.active;
   sen.history = scr.history.capacity() > 0 ? &scr.history : nullptr;
+  sen.workspace_ptr = &ws;
+  sen.contacts_ptr = &scr.contacts;
+  sen.sensed = sample.sensed;
   sen.actuator_state_ptr = &act_state;
 
   step_view_with<Root, actuator_state> view;
@@ -284,6 +311,8 @@ rollout_result rollout_impl(const model<Root>& m, const Actuator& act, C& ctrl,
   view.contact_active = scr.contacts.active;
   view.contact_force = scr.contacts.force;
   view.toe_top_touching = scr.contacts.toe_top_touching;  // per body (Wang 2009: the swing toe's)
+  view.workspace_ptr = &ws;
+  view.contacts_ptr = &scr.contacts;
   view.actuator_state_ptr = &act_state;
 
   // The system the integrator steps: ABA with the held torques and external wrenches. An
@@ -355,7 +384,12 @@ rollout_result rollout_impl(const model<Root>& m, const Actuator& act, C& ctrl,
     apply_contact_forces(m, ws, ground, opt.contact, scr.contacts, dt);
     if (!opt.pushes.empty()) apply_pushes(m, ws, std::span<const push>(opt.pushes), t);
     // 4. sense and command
-    scr.history.push(s.q, s.v, std::span<const int>(scr.contacts.points_touching));
+    if (num_sensed > 0) sense_actuator();
+    if (scr.history.capacity() > 0) {
+      sample.com = com;
+      sample.com_velocity = com_v;
+      scr.history.push(sample);
+    }
     if (k >= next_call) {
       sen.t = t;
       sen.step = static_cast<int>(k);
