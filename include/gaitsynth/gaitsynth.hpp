@@ -12,6 +12,7 @@
 #include "gaitsynth/spatial/spatial.hpp"
 #include "gaitsynth/spatial/types.hpp"
 
+#include "gaitsynth/model/fingerprint.hpp"
 #include "gaitsynth/model/model.hpp"
 #include "gaitsynth/model/model_builder.hpp"
 #include "gaitsynth/model/root.hpp"
@@ -41,8 +42,11 @@
 #include "gaitsynth/contact/steps_terrain.hpp"
 #include "gaitsynth/contact/terrain.hpp"
 
+#include "gaitsynth/actuators/command_kind.hpp"
 #include "gaitsynth/actuators/concept.hpp"
+#include "gaitsynth/actuators/mixed_pd.hpp"
 #include "gaitsynth/actuators/pd.hpp"
+#include "gaitsynth/actuators/pd_law.hpp"
 #include "gaitsynth/actuators/torque.hpp"
 
 #include "gaitsynth/controllers/concept.hpp"
@@ -50,6 +54,7 @@
 #include "gaitsynth/controllers/nearest_neighbor.hpp"
 #include "gaitsynth/controllers/nearest_neighbor_synthesis.hpp"
 #include "gaitsynth/controllers/pose_hold.hpp"
+#include "gaitsynth/controllers/sensor_history.hpp"
 #include "gaitsynth/controllers/sensors.hpp"
 
 #include "gaitsynth/objectives/concept.hpp"
@@ -58,6 +63,10 @@
 #include "gaitsynth/objectives/weighted_sum.hpp"
 
 #include "gaitsynth/rollout/options.hpp"
+#include "gaitsynth/rollout/policy_states.hpp"
+#include "gaitsynth/rollout/problem.hpp"
+#include "gaitsynth/rollout/problem_cost.hpp"
+#include "gaitsynth/rollout/problem_with_variants.hpp"
 #include "gaitsynth/rollout/recorder.hpp"
 #include "gaitsynth/rollout/result.hpp"
 #include "gaitsynth/rollout/rollout.hpp"

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <tuple>
 
+#include "gaitsynth/actuators/mixed_pd.hpp"
 #include "gaitsynth/actuators/pd.hpp"
 #include "gaitsynth/actuators/torque.hpp"
 #include "gaitsynth/contact/flat_terrain.hpp"
@@ -29,7 +30,7 @@ template <class... Ts>
 struct type_list {};
 
 using characters = type_list<planar_human7, humanoid3d>;
-using actuators = type_list<pd_actuator, torque_actuator>;
+using actuators = type_list<pd_actuator, torque_actuator, mixed_pd_actuator>;
 using controllers = type_list<pose_hold>;
 using objectives = type_list<decltype(distance_objective())>;
 using terrains = type_list<flat_terrain, slope_terrain>;
@@ -92,7 +93,7 @@ struct to_combinations<type_list<Tuples...>> {
 using all_combinations =
     typename to_combinations<typename product<characters, actuators, controllers, objectives,
                                               terrains, integrators>::type>::type;
-static_assert(std::tuple_size_v<all_combinations> == 2 * 2 * 1 * 1 * 2 * 2);
+static_assert(std::tuple_size_v<all_combinations> == 2 * 3 * 1 * 1 * 2 * 2);
 
 // ---- factories ----------------------------------------------------------------------------------
 template <class T>
@@ -132,9 +133,12 @@ struct make_controller<pose_hold> {
   template <class Model, class Actuator>
   static pose_hold from(const Model& m, const Actuator& a) {
     if (a.input_kind() == command_kind::joint_target) return pose_hold(m);
-    // Torque actuation: the controller servos itself with the same gains.
+    // Torque actuation: the controller servos itself with the same gains; mixed actuation: it
+    // sends those gains with its targets.
     const pd_actuator g = standing_pd(m, dt);
-    return pose_hold(m, {.output = command_kind::joint_torque, .kp = g.kp, .kd = g.kd});
+    const command_kind out =
+        a.input_kind() == command_kind::mixed ? command_kind::mixed : command_kind::joint_torque;
+    return pose_hold(m, {.output = out, .kp = g.kp, .kd = g.kd});
   }
 };
 

@@ -78,6 +78,7 @@ __attribute__((noinline)) void operator delete[](void* p, std::size_t, std::alig
 
 #include <catch2/catch.hpp>
 
+#include "gaitsynth/actuators/mixed_pd.hpp"
 #include "gaitsynth/actuators/pd.hpp"
 #include "gaitsynth/actuators/torque.hpp"
 #include "gaitsynth/contact/flat_terrain.hpp"
@@ -223,6 +224,13 @@ TEST_CASE("no heap allocation in the step loop of a rollout", "[rollout][allocat
     const auto m = wang2009_humanoid();
     require_no_allocation(m, standing_pd(m, dt), delayed_reader(m), flat_terrain(),
                           semi_implicit_euler(), options_for(m, flat_terrain()));
+  }
+  SECTION("3D humanoid, mixed PD actuator (gains in the command)") {
+    const auto m = wang2009_humanoid();
+    const pd_actuator g = standing_pd(m, dt);
+    require_no_allocation(m, mixed_pd_actuator{},
+                          pose_hold(m, {.output = command_kind::mixed, .kp = g.kp, .kd = g.kd}),
+                          flat_terrain(), semi_implicit_euler(), options_for(m, flat_terrain()));
   }
   SECTION("7-link planar human with the recorder on") {
     const auto m = sharon2005_human7();

@@ -179,11 +179,9 @@ rollout_result rollout_impl(const model<Root>& m, const Actuator& act, C& ctrl,
   check_argument(std::isfinite(period) && period >= 0.0,
                  "controller period must be finite and >= 0 s, got ", period);
   prepare_rollout_scratch(m, scr);
-  if constexpr (controller_with_output_kind<C>)
-    check_argument(ctrl.output_kind() == act.input_kind(), "controller output kind ",
-                   static_cast<int>(ctrl.output_kind()),
-                   " does not match the actuator's input kind ", static_cast<int>(act.input_kind()),
-                   " (0 joint_torque, 1 joint_target, 2 excitation)");
+  // Static kinds (static constexpr output_kind() / input_kind()): a compile error when they
+  // differ; otherwise a run-time check that names both kinds.
+  check_command_kinds(ctrl, act);
 
   workspace<Root>& ws = scr.ws;
   sim_state& s = scr.state;
