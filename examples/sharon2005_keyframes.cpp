@@ -12,8 +12,8 @@
 #include <vector>
 
 #include "gaitsynth/contact/slope_terrain.hpp"
-#include "gaitsynth/io/keyframes_json.hpp"
 #include "gaitsynth/models/sharon2005.hpp"
+#include "gaitsynth/motion/keyframes_json.hpp"
 #include "gaitsynth/viz/filmstrip_svg.hpp"
 #include "gaitsynth/viz/scene.hpp"
 

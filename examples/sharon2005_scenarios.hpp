@@ -15,9 +15,9 @@
 #include <vector>
 
 #include "gaitsynth/contact/height_field_terrain.hpp"
-#include "gaitsynth/controllers/keyframes.hpp"
 #include "gaitsynth/dynamics/kinematics.hpp"
 #include "gaitsynth/models/sharon2005.hpp"
+#include "gaitsynth/motion/keyframes.hpp"
 
 namespace sharon_scenarios {
 

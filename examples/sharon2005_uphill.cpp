@@ -8,8 +8,8 @@
 #include "gaitsynth/actuators/torque.hpp"
 #include "gaitsynth/contact/slope_terrain.hpp"
 #include "gaitsynth/integrators/semi_implicit_euler.hpp"
-#include "gaitsynth/io/keyframes_json.hpp"
 #include "gaitsynth/models/sharon2005.hpp"
+#include "gaitsynth/motion/keyframes_json.hpp"
 #include "gaitsynth/objectives/mass_distance.hpp"
 #include "sharon2005_common.hpp"
 

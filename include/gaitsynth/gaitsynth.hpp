@@ -2,7 +2,7 @@
 /// \file gaitsynth.hpp
 /// Everything in gaitsynth. Convenient for examples and quick experiments; a program that cares
 /// about compile time includes only the headers it uses (each header includes what it needs).
-/// The nlohmann::json readers and writers (io/keyframes_json.hpp,
+/// The nlohmann::json readers and writers (motion/keyframes_json.hpp,
 /// controllers/nearest_neighbor_json.hpp) are included only when <nlohmann/json.hpp> is available.
 /// Architecture: docs/architecture.md.
 
@@ -49,8 +49,9 @@
 #include "gaitsynth/actuators/pd_law.hpp"
 #include "gaitsynth/actuators/torque.hpp"
 
+#include "gaitsynth/motion/keyframes.hpp"
+
 #include "gaitsynth/controllers/concept.hpp"
-#include "gaitsynth/controllers/keyframes.hpp"
 #include "gaitsynth/controllers/nearest_neighbor.hpp"
 #include "gaitsynth/controllers/nearest_neighbor_synthesis.hpp"
 #include "gaitsynth/controllers/pose_hold.hpp"
@@ -111,5 +112,5 @@
 
 #if __has_include(<nlohmann/json.hpp>)
 #include "gaitsynth/controllers/nearest_neighbor_json.hpp"
-#include "gaitsynth/io/keyframes_json.hpp"
+#include "gaitsynth/motion/keyframes_json.hpp"
 #endif

@@ -88,7 +88,7 @@ __attribute__((noinline)) void operator delete[](void* p, std::size_t, std::alig
 #include "gaitsynth/controllers/pose_hold.hpp"
 #include "gaitsynth/integrators/odeint.hpp"
 #include "gaitsynth/integrators/semi_implicit_euler.hpp"
-#include "gaitsynth/io/keyframes_json.hpp"
+#include "gaitsynth/motion/keyframes_json.hpp"
 #include "gaitsynth/objectives/distance.hpp"
 #include "gaitsynth/objectives/mass_distance.hpp"
 #include "gaitsynth/rollout/problem.hpp"

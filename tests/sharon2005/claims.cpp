@@ -21,8 +21,8 @@
 #include "gaitsynth/controllers/nearest_neighbor_json.hpp"
 #include "gaitsynth/controllers/nearest_neighbor_synthesis.hpp"
 #include "gaitsynth/integrators/semi_implicit_euler.hpp"
-#include "gaitsynth/io/keyframes_json.hpp"
 #include "gaitsynth/models/sharon2005.hpp"
+#include "gaitsynth/motion/keyframes_json.hpp"
 #include "gaitsynth/objectives/mass_distance.hpp"
 
 using namespace gaitsynth;

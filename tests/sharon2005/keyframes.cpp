@@ -6,9 +6,9 @@
 #include <numbers>
 #include <string>
 
-#include "gaitsynth/controllers/keyframes.hpp"
-#include "gaitsynth/io/keyframes_json.hpp"
 #include "gaitsynth/model/model_builder.hpp"
+#include "gaitsynth/motion/keyframes.hpp"
+#include "gaitsynth/motion/keyframes_json.hpp"
 
 using namespace gaitsynth;
 

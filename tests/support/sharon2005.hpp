@@ -5,10 +5,10 @@
 #include <string>
 #include <vector>
 
-#include "gaitsynth/controllers/keyframes.hpp"
 #include "gaitsynth/controllers/sensors.hpp"
 #include "gaitsynth/dynamics/kinematics.hpp"
 #include "gaitsynth/model/model_builder.hpp"
+#include "gaitsynth/motion/keyframes.hpp"
 
 namespace sharon_test {
 

@@ -49,10 +49,10 @@
 #include "gaitsynth/actuators/concept.hpp"
 #include "gaitsynth/actuators/pd_law.hpp"
 #include "gaitsynth/controllers/concept.hpp"
-#include "gaitsynth/controllers/keyframes.hpp"
 #include "gaitsynth/controllers/sensors.hpp"
 #include "gaitsynth/dynamics/kinematics.hpp"
 #include "gaitsynth/error.hpp"
+#include "gaitsynth/motion/keyframes.hpp"
 
 namespace gaitsynth {
 

@@ -33,7 +33,7 @@
 #include <vector>
 
 #include "gaitsynth/controllers/nearest_neighbor.hpp"
-#include "gaitsynth/io/keyframes_json.hpp"
+#include "gaitsynth/motion/keyframes_json.hpp"
 
 namespace gaitsynth {
 

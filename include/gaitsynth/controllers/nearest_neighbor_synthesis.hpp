@@ -26,9 +26,9 @@
 #include <utility>
 #include <vector>
 
-#include "gaitsynth/controllers/keyframes.hpp"
 #include "gaitsynth/controllers/nearest_neighbor.hpp"
 #include "gaitsynth/error.hpp"
+#include "gaitsynth/motion/keyframes.hpp"
 #include "gaitsynth/optimizers/continuation.hpp"
 #include "gaitsynth/optimizers/evaluators.hpp"
 #include "gaitsynth/optimizers/parameter_space.hpp"

@@ -34,11 +34,11 @@
 #include <utility>
 #include <vector>
 
-#include "gaitsynth/controllers/keyframes.hpp"
 #include "gaitsynth/dynamics/center_of_mass.hpp"
 #include "gaitsynth/dynamics/kinematics.hpp"
 #include "gaitsynth/dynamics/workspace.hpp"
 #include "gaitsynth/error.hpp"
+#include "gaitsynth/motion/keyframes.hpp"
 #include "gaitsynth/objectives/concept.hpp"
 #include "gaitsynth/rollout/trajectory.hpp"
 

@@ -39,7 +39,7 @@
 #include <string>
 #include <vector>
 
-#include "gaitsynth/controllers/keyframes.hpp"
+#include "gaitsynth/motion/keyframes.hpp"
 #include "gaitsynth/error.hpp"
 
 namespace gaitsynth {
