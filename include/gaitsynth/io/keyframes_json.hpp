@@ -1,0 +1,3 @@
+#pragma once
+// moved; kept for existing includes
+#include "gaitsynth/motion/keyframes_json.hpp"
