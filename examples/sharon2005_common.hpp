@@ -15,9 +15,9 @@
 #include <vector>
 
 #include "gaitsynth/controllers/nearest_neighbor_json.hpp"
-#include "gaitsynth/controllers/nearest_neighbor_synthesis.hpp"
 #include "gaitsynth/io/trajectory_csv.hpp"
 #include "gaitsynth/objectives/mass_distance.hpp"
+#include "gaitsynth/synthesis/nearest_neighbor_synthesis.hpp"
 #include "gaitsynth/viz/cli.hpp"
 
 namespace sharon_example {

@@ -24,12 +24,12 @@
 #include "gaitsynth/contact/flat_terrain.hpp"
 #include "gaitsynth/contact/slope_terrain.hpp"
 #include "gaitsynth/controllers/nearest_neighbor_json.hpp"
-#include "gaitsynth/controllers/nearest_neighbor_synthesis.hpp"
 #include "gaitsynth/integrators/semi_implicit_euler.hpp"
 #include "gaitsynth/io/trajectory_csv.hpp"
 #include "gaitsynth/models/sharon2005.hpp"
 #include "gaitsynth/motion/keyframes_json.hpp"
 #include "gaitsynth/objectives/mass_distance.hpp"
+#include "gaitsynth/synthesis/nearest_neighbor_synthesis.hpp"
 #include "gaitsynth/viz/cli.hpp"
 #include "sharon2005_scenarios.hpp"
 

@@ -12,13 +12,17 @@
 #include "gaitsynth/contact/flat_terrain.hpp"
 #include "gaitsynth/contact/slope_terrain.hpp"
 #include "gaitsynth/controllers/nearest_neighbor_json.hpp"
-#include "gaitsynth/controllers/nearest_neighbor_synthesis.hpp"
 #include "gaitsynth/controllers/pose_hold.hpp"
 #include "gaitsynth/integrators/semi_implicit_euler.hpp"
 #include "gaitsynth/io/keyframes_json.hpp"
 #include "gaitsynth/models/sharon2005.hpp"
 #include "gaitsynth/objectives/distance.hpp"
 #include "gaitsynth/objectives/mass_distance.hpp"
+#if __has_include("gaitsynth/synthesis/nearest_neighbor_synthesis.hpp")
+#include "gaitsynth/synthesis/nearest_neighbor_synthesis.hpp"
+#else  // revisions before the synthesis/ folder
+#include "gaitsynth/controllers/nearest_neighbor_synthesis.hpp"
+#endif
 #include "sharon2005_scenarios.hpp"
 using namespace gaitsynth;
 static std::string data_dir;

@@ -53,7 +53,6 @@
 
 #include "gaitsynth/controllers/concept.hpp"
 #include "gaitsynth/controllers/nearest_neighbor.hpp"
-#include "gaitsynth/controllers/nearest_neighbor_synthesis.hpp"
 #include "gaitsynth/controllers/pose_hold.hpp"
 #include "gaitsynth/controllers/sensor_history.hpp"
 #include "gaitsynth/controllers/sensors.hpp"
@@ -86,6 +85,8 @@
 #include "gaitsynth/optimizers/restarts.hpp"
 #include "gaitsynth/optimizers/sds.hpp"
 #include "gaitsynth/optimizers/test_functions.hpp"
+
+#include "gaitsynth/synthesis/nearest_neighbor_synthesis.hpp"
 
 #include "gaitsynth/models/anthropometry.hpp"
 #include "gaitsynth/models/models.hpp"

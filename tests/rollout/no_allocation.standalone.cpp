@@ -84,7 +84,6 @@ __attribute__((noinline)) void operator delete[](void* p, std::size_t, std::alig
 #include "gaitsynth/contact/flat_terrain.hpp"
 #include "gaitsynth/contact/slope_terrain.hpp"
 #include "gaitsynth/controllers/nearest_neighbor_json.hpp"
-#include "gaitsynth/controllers/nearest_neighbor_synthesis.hpp"
 #include "gaitsynth/controllers/pose_hold.hpp"
 #include "gaitsynth/integrators/odeint.hpp"
 #include "gaitsynth/integrators/semi_implicit_euler.hpp"
@@ -93,6 +92,7 @@ __attribute__((noinline)) void operator delete[](void* p, std::size_t, std::alig
 #include "gaitsynth/objectives/mass_distance.hpp"
 #include "gaitsynth/rollout/problem.hpp"
 #include "gaitsynth/rollout/rollout.hpp"
+#include "gaitsynth/synthesis/nearest_neighbor_synthesis.hpp"
 #include "support/rollout_e2.hpp"
 
 using namespace gaitsynth;

@@ -10,7 +10,6 @@
 #include "gaitsynth/actuators/torque.hpp"
 #include "gaitsynth/contact/flat_terrain.hpp"
 #include "gaitsynth/controllers/nearest_neighbor_json.hpp"
-#include "gaitsynth/controllers/nearest_neighbor_synthesis.hpp"
 #include "gaitsynth/controllers/pose_hold.hpp"
 #include "gaitsynth/integrators/odeint.hpp"
 #include "gaitsynth/integrators/semi_implicit_euler.hpp"
@@ -23,6 +22,7 @@
 #include "gaitsynth/rollout/problem.hpp"
 #include "gaitsynth/rollout/problem_cost.hpp"
 #include "gaitsynth/rollout/problem_with_variants.hpp"
+#include "gaitsynth/synthesis/nearest_neighbor_synthesis.hpp"
 
 using namespace gaitsynth;
 

@@ -15,7 +15,6 @@
 #include "gaitsynth/contact/flat_terrain.hpp"
 #include "gaitsynth/contact/slope_terrain.hpp"
 #include "gaitsynth/controllers/nearest_neighbor.hpp"
-#include "gaitsynth/controllers/nearest_neighbor_synthesis.hpp"
 #include "gaitsynth/controllers/pose_hold.hpp"
 #include "gaitsynth/integrators/semi_implicit_euler.hpp"
 #include "gaitsynth/models/sharon2005.hpp"
@@ -27,6 +26,7 @@
 #include "gaitsynth/optimizers/cmaes.hpp"
 #include "gaitsynth/optimizers/minimize.hpp"
 #include "gaitsynth/rollout/rollout.hpp"
+#include "gaitsynth/synthesis/nearest_neighbor_synthesis.hpp"
 #include "support/rollout_e2.hpp"
 
 using namespace gaitsynth;
