@@ -18,7 +18,7 @@
 #include "gaitsynth/io/trajectory_csv.hpp"
 #include "gaitsynth/objectives/mass_distance.hpp"
 #include "gaitsynth/synthesis/nearest_neighbor_synthesis.hpp"
-#include "gaitsynth/viz/cli.hpp"
+#include "viewer_flags.hpp"
 
 namespace sharon_example {
 
@@ -37,7 +37,7 @@ struct cli {
   bool stage1_only = false;        // normal walk: stop after the paper's flat-ground stage
   std::vector<double> horizons;    // explicit episode horizons, s (overrides --max-horizon)
   std::string initial_controller;  // start from this saved controller instead of the keyframes
-  gaitsynth::viz_outputs viz;      // --html, --filmstrip, ... of the 70 s check (viz/cli.hpp)
+  gaitsynth::viz_outputs viz;      // --html, --filmstrip, ... of the 70 s check (viewer_flags.hpp)
 };
 
 inline void usage(const char* name, const char* what) {
@@ -65,12 +65,12 @@ inline void usage(const char* name, const char* what) {
       << "                             (the paper's cost); default: also from 3 perturbed\n"
       << "                             copies (velocity x0.9, x1.1, 1 cm higher)\n"
       << "the 70 s check rollout (the filmstrip shows its first 3 s):\n"
-      << gaitsynth::viz_flags_help();
+      << viewer_flags::help();
 }
 
 inline cli parse(int argc, char** argv, const char* what) {
   cli c;
-  c.viz = gaitsynth::extract_viz_flags(argc, argv);  // --html FILE etc. (viz/cli.hpp)
+  c.viz = viewer_flags::extract(argc, argv);  // --html FILE etc. (viewer_flags.hpp)
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
     auto value = [&]() -> std::string {
@@ -216,8 +216,8 @@ void set_starts(Problem& prob, const cli& c) {
     prob.starts = gaitsynth::perturbed_starts(prob.character, prob.options.initial_state);
 }
 
-/// The viewer flags (--html, --filmstrip, ...; viz/cli.hpp) for the check rollout; the filmstrip
-/// is a strobe picture of the first 3 s (frames every 0.1 s, like the paper's Figures 5b-8).
+/// The viewer flags (--html, --filmstrip, ...; viewer_flags.hpp) for the check rollout; the
+/// filmstrip is a strobe picture of the first 3 s (frames every 0.1 s, as in Figures 5b-8).
 template <class Model>
 void write_views(const Model& m, const gaitsynth::trajectory& traj, const cli& c,
                  const std::string& title) {

@@ -30,8 +30,8 @@
 #include "gaitsynth/motion/keyframes_json.hpp"
 #include "gaitsynth/objectives/mass_distance.hpp"
 #include "gaitsynth/synthesis/nearest_neighbor_synthesis.hpp"
-#include "gaitsynth/viz/cli.hpp"
 #include "sharon2005_scenarios.hpp"
+#include "viewer_flags.hpp"
 
 namespace {
 
@@ -60,12 +60,12 @@ void usage(const char* name) {
             << "  --out DIR              folder of the CSV trajectory (default out/)\n"
             << "  --filmstrip-seconds S  length of the filmstrip (default 3)\n"
             << "  --filmstrip-from S     its start time (default 0)\n"
-            << viz_flags_help();
+            << viewer_flags::help();
 }
 
 options parse(int argc, char** argv) {
   options o;
-  o.viz = extract_viz_flags(argc, argv);
+  o.viz = viewer_flags::extract(argc, argv);
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
     auto value = [&]() -> std::string {

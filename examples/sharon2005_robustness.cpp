@@ -24,9 +24,9 @@
 #include "gaitsynth/motion/keyframes_json.hpp"
 #include "gaitsynth/objectives/mass_distance.hpp"
 #include "gaitsynth/synthesis/nearest_neighbor_synthesis.hpp"
-#include "gaitsynth/viz/cli.hpp"
 #include "gaitsynth/viz/filmstrip_svg.hpp"
 #include "sharon2005_scenarios.hpp"
+#include "viewer_flags.hpp"
 
 int main(int argc, char** argv) try {
   using namespace gaitsynth;
@@ -34,9 +34,9 @@ int main(int argc, char** argv) try {
   std::string ctrl_path = data + "normal_walk.controller.json";
   std::filesystem::path out = "out";
   double seconds = 70.0;
-  // Viewer flags (viz/cli.hpp): each is written once per variant, the variant's name inserted
+  // Viewer flags (viewer_flags.hpp): each is written once per variant, the variant's name inserted
   // before the file's extension (--html out/r.html gives out/r_torso_28kg.html, ...).
-  const viz_outputs views = extract_viz_flags(argc, argv);
+  const viz_outputs views = viewer_flags::extract(argc, argv);
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
     if (a == "--controller" && i + 1 < argc)
@@ -48,7 +48,7 @@ int main(int argc, char** argv) try {
     else {
       std::cerr << "usage: " << argv[0] << " [--controller FILE] [--out DIR] [--seconds S]\n"
                 << "viewer outputs, one per variant (NAME inserted before the extension):\n"
-                << viz_flags_help();
+                << viewer_flags::help();
       return a == "--help" ? 0 : 1;
     }
   }

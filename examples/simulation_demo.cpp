@@ -10,13 +10,14 @@
 //
 // Usage: simulation_demo [--html FILE] [--filmstrip FILE] [--gait-svg FILE] [--bvh FILE]
 //                        [--csv FILE] [--mjcf-replay FILE]
-// The viewer flags (viz/cli.hpp, docs/viewer.md) write the first rollout, the pushed humanoid.
+// The viewer flags (viewer_flags.hpp, docs/viewer.md) write the first rollout, the pushed humanoid.
 #include <chrono>
 #include <cstdio>
 #include <cstring>
 #include <string>
 
 #include "gaitsynth/gaitsynth.hpp"
+#include "viewer_flags.hpp"
 
 using namespace gaitsynth;
 
@@ -60,14 +61,14 @@ void print_result(const rollout_result& r, double wall) {
 int main(int argc, char** argv) {
   viz_outputs views;
   try {
-    views = extract_viz_flags(argc, argv);
+    views = viewer_flags::extract(argc, argv);
   } catch (const std::exception& e) {
     std::fprintf(stderr, "error: %s\n", e.what());
     return 2;
   }
   if (argc > 1) {
     std::fprintf(stderr, "unknown option '%s'\nusage: %s [options]\n%s", argv[1], argv[0],
-                 viz_flags_help());
+                 viewer_flags::help());
     return 2;
   }
 

@@ -101,8 +101,8 @@
 #include "gaitsynth/io/mjcf.hpp"
 #include "gaitsynth/io/mjcf_replay.hpp"
 #include "gaitsynth/io/trajectory_csv.hpp"
+#include "gaitsynth/io/viewer_outputs.hpp"
 
-#include "gaitsynth/viz/cli.hpp"
 #include "gaitsynth/viz/convergence_plot_svg.hpp"
 #include "gaitsynth/viz/filmstrip_svg.hpp"
 #include "gaitsynth/viz/gait_cycles.hpp"

@@ -1,16 +1,19 @@
-// viz/cli.hpp: the output flags are recognized, removed from argv, and write their files.
+// io/viewer_outputs.hpp writes every requested file; the examples' viewer flags
+// (examples/viewer_flags.hpp) are recognized and removed from argv.
 #include <catch2/catch.hpp>
 
 #include <filesystem>
 #include <string>
 #include <vector>
 
-#include "gaitsynth/viz/cli.hpp"
+#include "../../examples/viewer_flags.hpp"
+#include "gaitsynth/io/viewer_outputs.hpp"
 #include "viz/viz_fixture.hpp"
 
 using namespace gaitsynth;
 
-TEST_CASE("extract_viz_flags removes the output flags and keeps the rest", "[viz][cli]") {
+TEST_CASE("viewer_flags::extract removes the output flags and keeps the rest",
+          "[io][viewer_flags]") {
   std::vector<std::string> args{"prog",          "--seed",      "3",           "--html",
                                 "a.html",        "--bvh=b.bvh", "--gait-svg",  "g.svg",
                                 "--csv",         "c.csv",       "--filmstrip", "f.svg",
@@ -19,7 +22,7 @@ TEST_CASE("extract_viz_flags removes the output flags and keeps the rest", "[viz
   for (auto& a : args) argv.push_back(a.data());
   argv.push_back(nullptr);
   int argc = static_cast<int>(args.size());
-  const viz_outputs out = extract_viz_flags(argc, argv.data());
+  const viz_outputs out = viewer_flags::extract(argc, argv.data());
   CHECK(out.html == "a.html");
   CHECK(out.bvh == "b.bvh");
   CHECK(out.gait_svg == "g.svg");
@@ -36,14 +39,14 @@ TEST_CASE("extract_viz_flags removes the output flags and keeps the rest", "[viz
   std::string p0 = "prog", p1 = "--html";
   char* missing[] = {p0.data(), p1.data(), nullptr};
   int n = 2;
-  CHECK_THROWS_WITH(extract_viz_flags(n, missing), Catch::Contains("--html needs a file name"));
-  CHECK(std::string(viz_flags_help()).find("--html FILE") != std::string::npos);
+  CHECK_THROWS_WITH(viewer_flags::extract(n, missing), Catch::Contains("--html needs a file name"));
+  CHECK(std::string(viewer_flags::help()).find("--html FILE") != std::string::npos);
 }
 
-TEST_CASE("write_viz_outputs writes every requested file", "[viz][cli]") {
+TEST_CASE("write_viz_outputs writes every requested file", "[io][viewer_outputs]") {
   const auto m = viz_test::make_biped<planar_root>();
   const auto traj = viz_test::make_walk(m, 2.2, 0.01);
-  const std::string dir = std::string(GAITSYNTH_BINARY_DIR) + "/viz_outputs/cli";
+  const std::string dir = std::string(GAITSYNTH_BINARY_DIR) + "/viz_outputs/viewer_outputs";
   std::filesystem::create_directories(dir);
   viz_outputs out;
   out.html = dir + "/p.html";
