@@ -80,6 +80,7 @@ __attribute__((noinline)) void operator delete[](void* p, std::size_t, std::alig
 
 #include "gaitsynth/actuators/mixed_pd.hpp"
 #include "gaitsynth/actuators/pd.hpp"
+#include "gaitsynth/actuators/pd_law.hpp"
 #include "gaitsynth/actuators/torque.hpp"
 #include "gaitsynth/contact/flat_terrain.hpp"
 #include "gaitsynth/contact/slope_terrain.hpp"
@@ -186,6 +187,33 @@ rollout_options options_for(const Model& m, const auto& ground) {
   return o;
 }
 
+/// PD servos behind a first-order lag (state: one torque per joint DOF), integrated with the body.
+struct lagged_pd {
+  pd_actuator pd;
+  using state_type = Eigen::VectorXd;
+  template <root_joint Root>
+  state_type make_state(const model<Root>& m) const {
+    return Eigen::VectorXd::Zero(m.num_joint_dofs());
+  }
+  template <root_joint Root>
+  int command_size(const model<Root>& m) const {
+    return pd.command_size(m);
+  }
+  static constexpr command_kind input_kind() { return command_kind::joint_target; }
+  template <root_joint Root>
+  void torques(const model<Root>&, const sim_state&, Eigen::Ref<const Eigen::VectorXd>,
+               const state_type& z, Eigen::Ref<Eigen::VectorXd> tau) const {
+    tau = z;
+  }
+  template <root_joint Root>
+  void derivative(const model<Root>& m, const sim_state& s, Eigen::Ref<const Eigen::VectorXd> cmd,
+                  const state_type& z, state_type& dz) const {
+    for (int j = 0; j < m.num_joint_dofs(); ++j)
+      dz[j] = (pd_torque(pd.kp[j], pd.kd[j], cmd[j], s.q[Root::nq + j], s.v[Root::nv + j]) - z[j]) /
+              0.005;
+  }
+};
+
 /// Keeps the compiler from eliding an allocation (new/delete pairs may be elided since C++14).
 void benchmark_escape(void* p) {
   asm volatile("" : : "g"(p) : "memory");
@@ -231,6 +259,12 @@ TEST_CASE("no heap allocation in the step loop of a rollout", "[rollout][allocat
     require_no_allocation(m, mixed_pd_actuator{},
                           pose_hold(m, {.output = command_kind::mixed, .kp = g.kp, .kd = g.kd}),
                           flat_terrain(), semi_implicit_euler(), options_for(m, flat_terrain()));
+  }
+  SECTION("3D humanoid, lagged PD integrated with the body by RK4 (torques at every stage)") {
+    const auto m = wang2009_humanoid();
+    static_assert(actuator_with_continuous_state<lagged_pd, floating_root>);
+    require_no_allocation(m, lagged_pd{standing_pd(m, dt)}, pose_hold(m), flat_terrain(),
+                          odeint_rk4(), options_for(m, flat_terrain()));
   }
   SECTION("7-link planar human with the recorder on") {
     const auto m = sharon2005_human7();

@@ -79,6 +79,35 @@ struct timed_pd : sensing_pd {
   }
 };
 
+/// PD servos that check the workspace they are handed against a fresh forward kinematics.
+struct kinematics_reading_pd {
+  pd_actuator pd;
+  double* max_error;
+  int* calls;
+  using state_type = no_actuator_state;
+  template <root_joint Root>
+  state_type make_state(const model<Root>& m) const {
+    return pd.make_state(m);
+  }
+  template <root_joint Root>
+  int command_size(const model<Root>& m) const {
+    return pd.command_size(m);
+  }
+  static constexpr command_kind input_kind() { return command_kind::joint_target; }
+  template <root_joint Root>
+  void torques(const model<Root>& m, const sim_state& s, const workspace<Root>& ws,
+               Eigen::Ref<const Eigen::VectorXd> cmd, const state_type& st,
+               Eigen::Ref<Eigen::VectorXd> tau) const {
+    auto fresh = make_workspace(m);  // (allocates: a test actuator)
+    forward_kinematics(m, fresh, s.q, s.v);
+    for (int b = 0; b < m.num_bodies(); ++b)
+      *max_error = std::max({*max_error, (ws.body_position[b] - fresh.body_position[b]).norm(),
+                             (ws.body_linear_velocity[b] - fresh.body_linear_velocity[b]).norm()});
+    ++*calls;
+    pd.torques(m, s, cmd, st, tau);
+  }
+};
+
 struct views_probe {
   struct state_type {};
   pose_hold inner;
@@ -186,4 +215,23 @@ TEST_CASE("the sensor history delays the COM, body rotations and the actuator's 
   }
   CHECK((log.com[200] - log.com[100]).norm() > 1e-4);  // the push moved it: not vacuous
   CHECK((log.torso_rotation[200] - log.torso_rotation[100]).norm() > 1e-6);
+}
+
+TEST_CASE("an actuator may read the rollout's kinematics", "[rollout][views][actuators]") {
+  const auto m = wang2009_humanoid();
+  static_assert(actuator<kinematics_reading_pd, floating_root>);
+  static_assert(actuator_with_kinematics<kinematics_reading_pd, floating_root>);
+  static_assert(!actuator_with_state_only_torques<kinematics_reading_pd, floating_root>);
+  rollout_options opt;
+  opt.duration = 0.05;
+  opt.pushes = {push{0, vec3(150, 60, 0), 0.0, 0.05}};
+  double err = 0.0;
+  int calls = 0;
+  auto scr = make_rollout_scratch(m);
+  const auto r = rollout(m, kinematics_reading_pd{standing_pd(m, dt), &err, &calls}, pose_hold(m),
+                         distance_objective(), flat_terrain(), semi_implicit_euler(),
+                         Eigen::VectorXd::Zero(m.num_joint_dofs()), opt, scr);
+  REQUIRE(r.steps == 120);
+  CHECK(calls == 120);
+  CHECK(err == 0.0);
 }

@@ -21,19 +21,33 @@
 ///                            reference (RBDL's Millard2016TorqueMuscle::calcJointTorque is const
 ///                            with activation as an input); must not allocate. The state changes
 ///                            only in the hooks below.
+///   a.torques(m, s, ws, cmd, cst, tau)
+///                            the same for an actuator that reads the kinematics the rollout
+///                            already computed (musculotendon paths and moment arms): ws is a
+///                            const workspace<Root>& after forward kinematics of (s.q, s.v). An
+///                            actuator provides one of the two forms (both: this one is used).
 ///
 /// Optional hooks for actuators with dynamics, detected with requires:
 ///   a.advance(m, s, cmd, st, dt)       advance st over one physics step (the actuator integrates
-///                                      itself, e.g. activation dynamics, exactly or implicitly)
-///   a.derivative(m, s, cmd, st, dst)   d(st)/dt into dst (same type as st); the rollout then takes
-///                                      an explicit Euler step st += dt * dst (st must support it)
-/// The rollout calls advance (or the derivative step) after the physics integration step, with
-/// the state and command the torques were computed from (zero-order hold, like the torques).
+///                                      itself, e.g. activation dynamics, exactly or implicitly),
+///                                      after the physics step, with the step's command and start
+///                                      state s (zero-order hold, like the torques)
+///   a.derivative(m, s, cmd, cst, dst)  d(st)/dt into dst (same type as st). When A::state_type is
+///                                      Eigen::VectorXd and the integrator takes a first-order
+///                                      state (integrators/concept.hpp), st is integrated WITH
+///                                      (q, v) through the integrator's system: semi-implicit Euler
+///                                      keeps its order for the rigid body and takes an explicit
+///                                      Euler step of st from the step's start; RK4 takes a
+///                                      fourth-order step of the coupled system, the torques
+///                                      re-evaluated from (q, v, st) at every stage. Otherwise the
+///                                      rollout takes st += dt * dst after the physics step.
+///   a.sensed_size(m), a.sense(m, cst, out)   values exposed to controllers (see below)
 #include <Eigen/Core>
 #include <concepts>
 #include <span>
 
 #include "gaitsynth/actuators/command_kind.hpp"
+#include "gaitsynth/dynamics/workspace.hpp"
 #include "gaitsynth/model/model.hpp"
 #include "gaitsynth/model/state.hpp"
 
@@ -43,16 +57,41 @@ namespace gaitsynth {
 struct no_actuator_state {};
 
 template <class A, class Root>
-concept actuator = root_joint<Root> &&
-    requires(const A& a, const model<Root>& m, const sim_state& s,
-             Eigen::Ref<const Eigen::VectorXd> cmd, const typename A::state_type& cst,
-             Eigen::Ref<Eigen::VectorXd> tau) {
+concept actuator_with_kinematics = requires(const A& a, const model<Root>& m, const sim_state& s,
+                                            const workspace<Root>& ws,
+                                            Eigen::Ref<const Eigen::VectorXd> cmd,
+                                            const typename A::state_type& cst,
+                                            Eigen::Ref<Eigen::VectorXd> tau) {
+  a.torques(m, s, ws, cmd, cst, tau);
+};
+
+template <class A, class Root>
+concept actuator_with_state_only_torques = requires(const A& a, const model<Root>& m,
+                                                    const sim_state& s,
+                                                    Eigen::Ref<const Eigen::VectorXd> cmd,
+                                                    const typename A::state_type& cst,
+                                                    Eigen::Ref<Eigen::VectorXd> tau) {
+  a.torques(m, s, cmd, cst, tau);
+};
+
+template <class A, class Root>
+concept actuator = root_joint<Root> && requires(const A& a, const model<Root>& m) {
   typename A::state_type;
   { a.make_state(m) } -> std::same_as<typename A::state_type>;
   { a.command_size(m) } -> std::convertible_to<int>;
   { a.input_kind() } -> std::same_as<command_kind>;
-  a.torques(m, s, cmd, cst, tau);
-};
+} &&(actuator_with_state_only_torques<A, Root> || actuator_with_kinematics<A, Root>);
+
+/// Joint torques of actuator a: through the kinematics form when it has one (see above).
+template <root_joint Root, class A>
+void actuator_torques(const A& a, const model<Root>& m, const sim_state& s,
+                      const workspace<Root>& ws, Eigen::Ref<const Eigen::VectorXd> cmd,
+                      const typename A::state_type& st, Eigen::Ref<Eigen::VectorXd> tau) {
+  if constexpr (actuator_with_kinematics<A, Root>)
+    a.torques(m, s, ws, cmd, st, tau);
+  else
+    a.torques(m, s, cmd, st, tau);
+}
 
 template <class A, class Root>
 concept actuator_with_advance = requires(const A& a, const model<Root>& m, const sim_state& s,
@@ -64,11 +103,18 @@ concept actuator_with_advance = requires(const A& a, const model<Root>& m, const
 template <class A, class Root>
 concept actuator_with_derivative = requires(const A& a, const model<Root>& m, const sim_state& s,
                                             Eigen::Ref<const Eigen::VectorXd> cmd,
+                                            const typename A::state_type& cst,
                                             typename A::state_type& st,
                                             typename A::state_type& dst) {
-  a.derivative(m, s, cmd, st, dst);
+  a.derivative(m, s, cmd, cst, dst);
   st += 1.0 * dst;
 };
+
+/// A derivative actuator whose state is a plain vector: integrated with (q, v) by integrators
+/// that take a first-order state (see derivative above).
+template <class A, class Root>
+concept actuator_with_continuous_state =
+    actuator_with_derivative<A, Root> && std::same_as<typename A::state_type, Eigen::VectorXd>;
 
 /// Optional: values the actuator exposes to controllers, now and with neural delays
 /// (sensors::sensed, sensors::delayed_sensed): normalized muscle force and fiber length for the

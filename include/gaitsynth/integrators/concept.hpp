@@ -13,6 +13,15 @@
 ///
 /// Integrators own their scratch vectors; `prepare(model)` sizes them so that no step allocates.
 /// The quaternion of a floating root is kept unit length by every integrator.
+///
+/// Optionally an integrator advances a first-order state z (nz values: muscle activations and
+/// fiber lengths) together with (q, v), through a coupled system
+///
+///   sys(q, v, z, t, ddq_out, zdot_out)
+///   integrator.prepare(model, nz);  integrator.step(model, state, z, dt, sys)
+///
+/// so that the actuator's dynamics and the rigid body are one ODE (actuators/concept.hpp,
+/// derivative).
 #include <Eigen/Core>
 #include <concepts>
 
@@ -38,6 +47,25 @@ struct system_archetype {
 };
 }  // namespace detail
 
+namespace detail {
+/// The minimal coupled system (q, v, z), used to check integrator_with_first_order_state.
+struct coupled_system_archetype {
+  void operator()(const Eigen::VectorXd&, const Eigen::VectorXd&, const Eigen::VectorXd&, double,
+                  Eigen::VectorXd& ddq, Eigen::VectorXd& zdot) const {
+    ddq.setZero();
+    zdot.setZero();
+  }
+};
+}  // namespace detail
+
+/// A callable usable as the coupled system of integrator_with_first_order_state.
+template <class Sys>
+concept coupled_system = requires(Sys& sys, const Eigen::VectorXd& q, const Eigen::VectorXd& v,
+                                  const Eigen::VectorXd& z, double t, Eigen::VectorXd& ddq,
+                                  Eigen::VectorXd& zdot) {
+  sys(q, v, z, t, ddq, zdot);
+};
+
 /// An integrator for models with root joint Root.
 template <class I, class Root>
 concept integrator = root_joint<Root> && requires(I& integ, const model<Root>& m, sim_state& s,
@@ -45,6 +73,15 @@ concept integrator = root_joint<Root> && requires(I& integ, const model<Root>& m
   integ.step(m, s, dt, sys);
   integ.prepare(m);
   { I::order } -> std::convertible_to<int>;
+};
+
+/// An integrator that also advances a first-order state z with (q, v) (see the file comment).
+template <class I, class Root>
+concept integrator_with_first_order_state = integrator<I, Root> &&
+    requires(I& integ, const model<Root>& m, sim_state& s, Eigen::VectorXd& z, double dt,
+             detail::coupled_system_archetype sys) {
+  integ.prepare(m, 1);
+  integ.step(m, s, z, dt, sys);
 };
 
 /// Optional promise of an integrator: `static constexpr bool evaluates_state_first = true` means

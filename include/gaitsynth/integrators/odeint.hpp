@@ -4,10 +4,10 @@
 /// This is the ONLY gaitsynth header that includes Odeint's Eigen adapter (it adds operators to
 /// namespace Eigen; style-anchors.md, sec. 2).
 ///
-/// The first-order state is x = [q; v] (size nq + nv) with dx/dt = [qdot(q, v); ddq]; for a floating
-/// root, d(quaternion)/dt = 0.5 quaternion * (0, omega_body) (Hamilton product), so the stepper stays
-/// a true fourth-order method; the quaternion is renormalized after each step (a projection that does
-/// not reduce the order).
+/// The first-order state is x = [q; v] (size nq + nv) with dx/dt = [qdot(q, v); ddq]; for a
+/// floating root, d(quaternion)/dt = 0.5 quaternion * (0, omega_body) (Hamilton product), so the
+/// stepper stays a true fourth-order method; the quaternion is renormalized after each step (a
+/// projection that does not reduce the order).
 #include <Eigen/Core>
 #include <boost/numeric/odeint.hpp>
 #include <boost/numeric/odeint/external/eigen/eigen.hpp>
@@ -69,6 +69,21 @@ struct odeint_rk4 {
                      x_, 0.0, 0.0);
   }
 
+  /// The same, for steps that also advance a first-order state of nz values (a stepper of its
+  /// own: Odeint sizes its stages once).
+  template <root_joint Root>
+  void prepare(const model<Root>& m, Eigen::Index nz) {
+    prepare(m);
+    const Eigen::Index n = m.nq() + m.nv() + nz;
+    xz_.setZero(n);
+    z_.setZero(nz);
+    zdot_.setZero(nz);
+    if constexpr (std::is_same_v<Root, floating_root>) xz_[3] = 1.0;
+    coupled_stepper_.do_step(
+        [](const state_type& x, state_type& dxdt, double) { dxdt.setZero(x.size()); }, xz_, 0.0,
+        0.0);
+  }
+
   /// Advances s by dt. \throws std::invalid_argument if dt is not finite and > 0 or s has the wrong
   /// sizes.
   template <root_joint Root, second_order_system Sys>
@@ -95,9 +110,42 @@ struct odeint_rk4 {
     s.t += dt;
   }
 
+  /// Advances s and a first-order state z together: one RK4 step of x = [q; v; z] with
+  /// dx/dt = [qdot(q, v); ddq(q, v, z); zdot(q, v, z)] (integrators/concept.hpp).
+  template <root_joint Root, coupled_system Sys>
+  void step(const model<Root>& m, sim_state& s, Eigen::VectorXd& z, double dt, Sys&& sys) {
+    check_positive(dt, "dt (time step, s)");
+    const int nq = m.nq(), nv = m.nv();
+    const Eigen::Index nz = z.size();
+    check_size(s.q.size(), nq, "state.q (generalized positions)");
+    check_size(s.v.size(), nv, "state.v (generalized velocities)");
+    check_argument(xz_.size() == nq + nv + nz,
+                   "odeint_rk4: prepare(model, nz) must size the coupled state first (nz = ", nz,
+                   ")");
+    xz_.head(nq) = s.q;
+    xz_.segment(nq, nv) = s.v;
+    xz_.tail(nz) = z;
+    auto rhs = [&](const state_type& x, state_type& dxdt, double t) {
+      q_ = x.head(nq);
+      v_ = x.segment(nq, nv);
+      z_ = x.tail(nz);
+      sys(static_cast<const Eigen::VectorXd&>(q_), static_cast<const Eigen::VectorXd&>(v_),
+          static_cast<const Eigen::VectorXd&>(z_), t, ddq_, zdot_);
+      detail::configuration_rate(m, q_, v_, dxdt.head(nq));
+      dxdt.segment(nq, nv) = ddq_;
+      dxdt.tail(nz) = zdot_;
+    };
+    coupled_stepper_.do_step(std::ref(rhs), xz_, s.t, dt);
+    s.q = xz_.head(nq);
+    s.v = xz_.segment(nq, nv);
+    z = xz_.tail(nz);
+    normalize_configuration(m, s.q);
+    s.t += dt;
+  }
+
  private:
-  stepper_type stepper_;
-  state_type x_, q_, v_, ddq_;
+  stepper_type stepper_, coupled_stepper_;
+  state_type x_, q_, v_, ddq_, xz_, z_, zdot_;
 };
 
 }  // namespace gaitsynth

@@ -78,6 +78,8 @@ struct rollout_scratch {
   contact_state contacts;       ///< penalty contact anchors, flags, forces, counts per body
   sensor_history history;       ///< delayed sensor samples
   Eigen::VectorXd sensed;       ///< the actuator's sensed values this step (actuator_with_sensing)
+  sim_state stage;              ///< an integrator stage's state (coupled actuator dynamics)
+  Eigen::VectorXd stage_tau;    ///< nv: total torques at that stage, N m
   std::uint64_t model_fingerprint = 0;  ///< of the model ws and contacts were made for
   bool prepared = false;
 };
@@ -94,6 +96,8 @@ void prepare_rollout_scratch(const model<Root>& m, rollout_scratch<Root>& s) {
   s.tau_passive = Eigen::VectorXd::Zero(m.nv());
   s.tau_total = Eigen::VectorXd::Zero(m.nv());
   s.contacts = make_contact_state(m);
+  s.stage = make_state(m);
+  s.stage_tau = Eigen::VectorXd::Zero(m.nv());
   s.model_fingerprint = fp;
   s.prepared = true;
 }
@@ -222,7 +226,14 @@ rollout_result rollout_impl(const model<Root>& m, const Actuator& act, C& ctrl,
   scr.tau_total.setZero();
   validate(opt.contact);
   scr.contacts.reset();
-  integ.prepare(m);
+  // An actuator with continuous dynamics is integrated with (q, v) when the integrator can
+  // (actuators/concept.hpp, derivative): one ODE, the torques re-evaluated at every stage.
+  constexpr bool coupled = actuator_with_continuous_state<Actuator, Root> &&
+                           integrator_with_first_order_state<Integrator, Root>;
+  if constexpr (coupled)
+    integ.prepare(m, act_state.size());
+  else
+    integ.prepare(m);
   validate_pushes(m, std::span<const push>(opt.pushes));
 
   const int nj = m.num_joint_dofs();
@@ -328,6 +339,39 @@ rollout_result rollout_impl(const model<Root>& m, const Actuator& act, C& ctrl,
     }
   };
 
+  // The coupled system (q, v, z = actuator state). On the step's own vectors it is the step's
+  // start: the torques of step 5 and the kinematics of step 1. At another stage (RK4) the
+  // actuator and passive torques are evaluated anew from (q, v, z); contact and pushes stay
+  // held over the step, as for every integrator.
+  [[maybe_unused]] auto coupled_sys = [&](const Eigen::VectorXd& q, const Eigen::VectorXd& v,
+                                          const auto& z, double t, Eigen::VectorXd& ddq,
+                                          Eigen::VectorXd& zdot) {
+    if constexpr (coupled) {
+      const auto cmd = Eigen::Ref<const Eigen::VectorXd>(scr.command);
+      if (&q == &s.q && &v == &s.v && &z == &act_state) {
+        sys(q, v, t, ddq);
+        act.derivative(m, std::as_const(s), cmd, z, zdot);
+        return;
+      }
+      sim_state& st = scr.stage;
+      st.q = q;
+      st.v = v;
+      st.t = t;
+      forward_kinematics(m, ws, q, v);
+      Eigen::VectorXd& tau = scr.stage_tau;
+      for (int i = 0; i < Root::nv; ++i) tau[i] = 0.0;
+      actuator_torques(act, m, std::as_const(st), std::as_const(ws), cmd, z,
+                       Eigen::Ref<Eigen::VectorXd>(tau.tail(nj)));
+      for (int j = 0; j < nj; ++j) {
+        const joint_limit& L = m.dofs[j].limit;
+        if (L.model != limit_model::none)
+          tau[Root::nv + j] += joint_limit_torque(L, q[Root::nq + j], v[Root::nv + j]);
+      }
+      ddq = aba(m, ws, q, v, tau);
+      act.derivative(m, std::as_const(st), cmd, z, zdot);
+    }
+  };
+
   // Fills the next trajectory frame with the state at step k_rec (kinematics current).
   std::int64_t last_recorded = -1;
   auto record_frame = [&](std::int64_t k_rec, double t) {
@@ -399,8 +443,8 @@ rollout_result rollout_impl(const model<Root>& m, const Actuator& act, C& ctrl,
       next_call = detail::command_step(calls, period, dt);
     }
     // 5. actuator and passive torques
-    act.torques(m, s, Eigen::Ref<const Eigen::VectorXd>(scr.command), act_state,
-                Eigen::Ref<Eigen::VectorXd>(scr.tau.tail(nj)));
+    actuator_torques(act, m, s, std::as_const(ws), Eigen::Ref<const Eigen::VectorXd>(scr.command),
+                     std::as_const(act_state), Eigen::Ref<Eigen::VectorXd>(scr.tau.tail(nj)));
     // Passive limit torques and the total, in one scalar loop (joint_limit_torques on a zeroed
     // vector, then tau + tau_passive): tau was just written entry by entry, and whole-vector
     // operations here would load it before those stores can forward.
@@ -432,9 +476,14 @@ rollout_result rollout_impl(const model<Root>& m, const Actuator& act, C& ctrl,
       }
     }
     // 7. integrate
-    integ.step(m, s, dt, sys);
+    if constexpr (coupled)
+      integ.step(m, s, act_state, dt, coupled_sys);
+    else
+      integ.step(m, s, dt, sys);
     kinematics_current = false;
-    if constexpr (actuator_with_advance<Actuator, Root>) {
+    if constexpr (coupled) {
+      // integrated above, with (q, v)
+    } else if constexpr (actuator_with_advance<Actuator, Root>) {
       act.advance(m, s, Eigen::Ref<const Eigen::VectorXd>(scr.command), act_state, dt);
     } else if constexpr (actuator_with_derivative<Actuator, Root>) {
       act.derivative(m, s, Eigen::Ref<const Eigen::VectorXd>(scr.command), act_state, act_rate);
