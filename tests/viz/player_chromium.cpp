@@ -9,6 +9,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <sstream>
 #include <string>
 
@@ -53,6 +54,45 @@ std::string tail(const std::string& s, std::size_t n = 3000) {
   return s.size() <= n ? s : s.substr(s.size() - n);
 }
 
+/// One headless Chromium run on a written page: its DOM after the page's script ran, its log, and
+/// the status line the page wrote after checking itself (empty when there is none).
+struct chromium_run {
+  std::string command, page, messages, status;
+  int rc = -1;
+};
+
+chromium_run run_chromium(const std::string& chromium, const fs::path& html, const fs::path& png) {
+  const fs::path dom = fs::path(html).replace_extension(".dom.html");
+  const fs::path log = fs::path(html).replace_extension(".chromium.log");
+  for (const auto& p : {png, dom, log}) fs::remove(p);
+  char tmpl[] = "/tmp/gaitsynth-chromium-XXXXXX";
+  const char* profile = mkdtemp(tmpl);
+  REQUIRE(profile != nullptr);
+  chromium_run r;
+  r.command = "timeout 180 '" + chromium +
+              "' --headless --no-sandbox --disable-gpu --disable-quic --no-first-run"
+              " --disable-background-networking --disable-component-update --disable-sync"
+              " --user-data-dir='" +
+              std::string(profile) +
+              "' --enable-logging=stderr --v=0"
+              " --screenshot='" +
+              png.string() +
+              "' --window-size=1280,800 --virtual-time-budget=3000"
+              " --dump-dom 'file://" +
+              fs::absolute(html).string() + "' > '" + dom.string() + "' 2> '" + log.string() + "'";
+  r.rc = std::system(r.command.c_str());
+  fs::remove_all(profile);
+  r.page = read_file(dom);
+  r.messages = read_file(log);
+  const std::string open = "<div id=\"status\"";
+  const auto a = r.page.find(open);
+  if (a != std::string::npos) {
+    const auto b = r.page.find('>', a), e = r.page.find("</div>", a);
+    r.status = r.page.substr(b + 1, e - b - 1);
+  }
+  return r;
+}
+
 }  // namespace
 
 TEST_CASE("HTML player runs in headless Chromium without errors and draws",
@@ -67,46 +107,21 @@ TEST_CASE("HTML player runs in headless Chromium without errors and draws",
   const fs::path dir = fs::path(GAITSYNTH_BINARY_DIR) / "viz_outputs";
   fs::create_directories(dir);
   const fs::path html = dir / "player.html", png = dir / "player.png";
-  const fs::path dom = dir / "player_dom.html", log = dir / "player_chromium.log";
-  for (const auto& p : {png, dom, log}) fs::remove(p);
 
   const auto m = viz_test::make_biped<floating_root>();
   const auto traj = viz_test::make_walk(m, 3.0, 0.01);
   save_html_player(m, traj, html.string(), {.title = "gaitsynth player (test walk)"});
-
-  char tmpl[] = "/tmp/gaitsynth-chromium-XXXXXX";
-  const char* profile = mkdtemp(tmpl);
-  REQUIRE(profile != nullptr);
-  const std::string cmd =
-      "timeout 180 '" + chromium +
-      "' --headless --no-sandbox --disable-gpu --disable-quic --no-first-run"
-      " --disable-background-networking --disable-component-update --disable-sync"
-      " --user-data-dir='" +
-      std::string(profile) +
-      "' --enable-logging=stderr --v=0"
-      " --screenshot='" +
-      png.string() +
-      "' --window-size=1280,800 --virtual-time-budget=3000"
-      " --dump-dom 'file://" +
-      fs::absolute(html).string() + "' > '" + dom.string() + "' 2> '" + log.string() + "'";
-  const int rc = std::system(cmd.c_str());
-  fs::remove_all(profile);
-  const std::string page = read_file(dom), messages = read_file(log);
-  INFO("command: " << cmd);
-  INFO("chromium log (tail):\n" << tail(messages));
-  REQUIRE(rc == 0);
+  const chromium_run r = run_chromium(chromium, html, png);
+  INFO("command: " << r.command);
+  INFO("chromium log (tail):\n" << tail(r.messages));
+  REQUIRE(r.rc == 0);
 
   // The status the page wrote after checking itself.
-  const std::string open = "<div id=\"status\"";
-  const auto a = page.find(open);
-  REQUIRE(a != std::string::npos);
-  const auto b = page.find('>', a), e = page.find("</div>", a);
-  const std::string status = page.substr(b + 1, e - b - 1);
-  INFO("status: " << status);
-  CHECK(status.rfind("ok ", 0) == 0);
-  CHECK(status.find("nonblank=1") != std::string::npos);
-  CHECK(status.find("error") == std::string::npos);
-  CHECK(messages.find("Uncaught") == std::string::npos);
+  INFO("status: " << r.status);
+  CHECK(r.status.rfind("ok ", 0) == 0);
+  CHECK(r.status.find("nonblank=1") != std::string::npos);
+  CHECK(r.status.find("error") == std::string::npos);
+  CHECK(r.messages.find("Uncaught") == std::string::npos);
 
   // A PNG of the requested size.
   const std::string img = read_file(png);
@@ -120,4 +135,37 @@ TEST_CASE("HTML player runs in headless Chromium without errors and draws",
   };
   CHECK(be32(16) == 1280u);  // IHDR width
   CHECK(be32(20) == 800u);   // IHDR height
+}
+
+TEST_CASE("HTML player with non-finite data (null in its JSON) runs in headless Chromium",
+          "[viz][html][chromium]") {
+  const std::string chromium = find_chromium();
+  if (chromium.empty()) {
+    WARN("SKIPPED: chromium not found on PATH; the headless non-finite data test did not run");
+    return;
+  }
+  const fs::path dir = fs::path(GAITSYNTH_BINARY_DIR) / "viz_outputs";
+  fs::create_directories(dir);
+  const fs::path html = dir / "player_nonfinite.html", png = dir / "player_nonfinite.png";
+  const auto m = viz_test::make_biped<planar_root>();
+  auto traj = viz_test::make_walk(m, 2.0, 0.01);
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  const double inf = std::numeric_limits<double>::infinity();
+  for (std::size_t f = 0; f < traj.frames.size(); f += 7) {
+    traj.frames[f].objective_terms[f % 2] = f % 3 ? nan : inf;
+    traj.frames[f].contact_force[f % 4].x() = -inf;
+  }
+  traj.frames.back().objective_terms.clear();  // missing terms are null too
+  traj.terrain.nx = traj.terrain.ny = 3;
+  traj.terrain.x0 = traj.terrain.y0 = -1;
+  traj.terrain.dx = traj.terrain.dy = 1;
+  traj.terrain.height = {0, 0, 0, 0, nan, 0, 0, 0, inf};
+  save_html_player(m, traj, html.string(), {.autoplay = false});
+  const chromium_run r = run_chromium(chromium, html, png);
+  INFO("command: " << r.command);
+  INFO("chromium log (tail):\n" << tail(r.messages));
+  REQUIRE(r.rc == 0);
+  INFO("status: " << r.status);
+  CHECK(r.status.rfind("ok ", 0) == 0);
+  CHECK(r.messages.find("Uncaught") == std::string::npos);
 }
