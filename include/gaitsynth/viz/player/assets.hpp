@@ -11,7 +11,9 @@ namespace gaitsynth::viz_detail::player_assets {
 // clang-format off
 // player.css
 inline constexpr std::string_view css[] = {
-R"gs(
+R"gs(/* The HTML player's style (viz/html_player.hpp inlines it through assets.hpp: run
+   scripts/embed_player_assets.py after editing). #main fills the window below the header, the
+   view on the left takes the space the 430 px plot column on the right leaves. */
 *{box-sizing:border-box}
 body{margin:0;font-family:system-ui,-apple-system,"Segoe UI",Roboto,sans-serif;font-size:13px;color:#222;background:#f3f4f6}
 header{padding:6px 12px;background:#1f2937;color:#f9fafb;display:flex;gap:16px;align-items:baseline}
@@ -37,7 +39,8 @@ header span{color:#cbd5e1;font-size:12px}
 
 // player_body.html
 inline constexpr std::string_view body[] = {
-R"gs(
+R"gs(<!-- The HTML player's controls and canvases, after the page header (viz/html_player.hpp, through
+     assets.hpp: run scripts/embed_player_assets.py after editing). player.js finds each by id. -->
 <div id="main">
  <div id="left">
   <canvas id="view" width="800" height="560"></canvas>
@@ -77,7 +80,14 @@ R"gs(
 
 // player.js
 inline constexpr std::string_view js[] = {
-R"gs(
+R"gs(// The HTML player's script. viz/html_player.hpp writes it into every page through assets.hpp:
+// run scripts/embed_player_assets.py after editing this file (tests/viz/player_assets.cpp fails
+// until then, and runs `node --check` on it where Node.js is installed).
+// It reads the page data, the JSON in the script element "gaitsynth-data" (keys: data.hpp), and
+// draws on the canvases of player_body.html. No library, no module, nothing fetched: the page
+// has to work opened from disk. After a few frames it checks its own pixels and writes the result
+// into the element with id "status", which tests/viz/player_chromium.cpp reads from headless
+// Chromium.
 (function () {
 'use strict';
 var statusEl = document.getElementById('status');
@@ -310,7 +320,8 @@ function drawOverlays(ctx, C, fi) {
     if (on) { ctx.fillStyle = '#d62728'; ctx.fill(); } else { ctx.strokeStyle = 'rgba(60,60,60,0.7)'; ctx.lineWidth = 1; ctx.stroke(); }
     if (showF && on) {
       var F = vec3(D.cf, fi, k, NC);
-      arrow(ctx, C, p, add(p, scl(F, D.force_scale)), 'rgba(20,150,40,0.9)', 2);
+)gs",
+R"gs(      arrow(ctx, C, p, add(p, scl(F, D.force_scale)), 'rgba(20,150,40,0.9)', 2);
     }
   }
   if (showF) {
@@ -325,8 +336,7 @@ function drawOverlays(ctx, C, fi) {
     var sc = project(C, c), sg = project(C, g);
     if (sc && sg) {
       ctx.setLineDash([4, 3]); ctx.strokeStyle = 'rgba(40,40,40,0.6)'; ctx.lineWidth = 1;
-)gs",
-R"gs(      ctx.beginPath(); ctx.moveTo(sc[0], sc[1]); ctx.lineTo(sg[0], sg[1]); ctx.stroke(); ctx.setLineDash([]);
+      ctx.beginPath(); ctx.moveTo(sc[0], sc[1]); ctx.lineTo(sg[0], sg[1]); ctx.stroke(); ctx.setLineDash([]);
       ctx.beginPath(); ctx.arc(sc[0], sc[1], 5, 0, 2 * Math.PI); ctx.fillStyle = '#ffd400'; ctx.fill();
       ctx.strokeStyle = '#222'; ctx.lineWidth = 1.5; ctx.stroke();
       ctx.beginPath(); ctx.moveTo(sc[0] - 5, sc[1]); ctx.lineTo(sc[0] + 5, sc[1]); ctx.moveTo(sc[0], sc[1] - 5); ctx.lineTo(sc[0], sc[1] + 5); ctx.stroke();
@@ -501,7 +511,8 @@ var jointsDiv = document.getElementById('joints');
 D.joint_names.forEach(function (n, j) {
   var lab = document.createElement('label'), cb = document.createElement('input');
   cb.type = 'checkbox'; cb.checked = D.plot_joints.indexOf(j) >= 0;
-  cb.onchange = function () { selected = []; jointsDiv.querySelectorAll('input').forEach(function (c, k) { if (c.checked) selected.push(k); }); };
+)gs",
+R"gs(  cb.onchange = function () { selected = []; jointsDiv.querySelectorAll('input').forEach(function (c, k) { if (c.checked) selected.push(k); }); };
   lab.appendChild(cb); lab.appendChild(document.createTextNode(' ' + n)); jointsDiv.appendChild(lab);
 });
 selected = D.plot_joints.slice();
@@ -517,8 +528,7 @@ function countPixels(ctx, W, H, bg) {
   return n;
 }
 function selfCheck() {
-)gs",
-R"gs(  if (checked) return;
+  if (checked) return;
   checked = true;
   try {
     // Whole view: anything but a uniform colour?

@@ -1,4 +1,11 @@
-
+// The HTML player's script. viz/html_player.hpp writes it into every page through assets.hpp:
+// run scripts/embed_player_assets.py after editing this file (tests/viz/player_assets.cpp fails
+// until then, and runs `node --check` on it where Node.js is installed).
+// It reads the page data, the JSON in the script element "gaitsynth-data" (keys: data.hpp), and
+// draws on the canvases of player_body.html. No library, no module, nothing fetched: the page
+// has to work opened from disk. After a few frames it checks its own pixels and writes the result
+// into the element with id "status", which tests/viz/player_chromium.cpp reads from headless
+// Chromium.
 (function () {
 'use strict';
 var statusEl = document.getElementById('status');
