@@ -25,6 +25,7 @@
 #include <cstddef>
 #include <span>
 #include <string>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -136,6 +137,22 @@ struct rollout_problem {
                           int record_every = 1) const {
     auto ctx = make_context();
     return evaluate(x, horizon, ctx, record, record_every);
+  }
+
+  /// One rollout of `horizon` seconds from options.initial_state, watched by `observer`
+  /// (rollout/observer.hpp: record, stream or plot).
+  template <class Observer>
+  requires(!std::is_convertible_v<Observer, trajectory*>) rollout_result
+      evaluate(const Eigen::VectorXd& x, double horizon, context_type& ctx, Observer&& observer)
+  const {
+    check_parameter_vector(x);
+    rollout_options& o = ctx.options;
+    o.initial_state = options.initial_state;
+    o.duration = horizon;
+    o.record = nullptr;
+    return rollout(character, actuator, ctx.controller, objective, ground, ctx.integrator,
+                   std::span<const double>(x.data(), static_cast<std::size_t>(x.size())), o,
+                   ctx.scratch, ctx.states, std::forward<Observer>(observer));
   }
 
   /// One rollout from start state s (its t is the target motion's time, for tracking costs).

@@ -12,9 +12,12 @@
 #include <string>
 #include <vector>
 
+#include "gaitsynth/contact/push.hpp"
 #include "gaitsynth/contact/terrain.hpp"
+#include "gaitsynth/dynamics/kinematics.hpp"
 #include "gaitsynth/error.hpp"
 #include "gaitsynth/model/model.hpp"
+#include "gaitsynth/rollout/observer.hpp"
 #include "gaitsynth/rollout/trajectory.hpp"
 
 namespace gaitsynth {
@@ -39,17 +42,23 @@ std::vector<std::string> v_coordinate_names(const model<Root>& m) {
   return n;
 }
 
-class trajectory_recorder {
+/// Records a trajectory (an observer, rollout/observer.hpp): every `every` physics steps, plus
+/// the state the rollout stopped in, then samples the terrain around the motion for the viewers.
+/// All memory is reserved in start(); observe() only writes into it. A null trajectory records
+/// nothing (rollout_options::record's default).
+class trajectory_observer {
  public:
-  /// Prepares `tr` (may be null: recording off) for at most max_frames frames of model m.
-  template <root_joint Root, class Names>
-  void start(trajectory* tr, const model<Root>& m, int every, std::int64_t max_frames,
-             const Names& objective_term_names, std::size_t max_pushes) {
-    tr_ = tr;
+  explicit trajectory_observer(trajectory* tr = nullptr, int every = 1) : tr_(tr), every_(every) {}
+
+  bool enabled() const { return tr_ != nullptr; }
+
+  /// Prepares the trajectory for at most horizon_steps / every + 1 frames of model m.
+  template <root_joint Root>
+  void start(const model<Root>& m, const observer_setup& su) {
     count_ = 0;
+    last_ = -1;
     if (tr_ == nullptr) return;
-    check_argument(every >= 1, "rollout_options::record_every must be >= 1, got ", every);
-    every_ = every;
+    check_argument(every_ >= 1, "rollout_options::record_every must be >= 1, got ", every_);
     tr_->model_name = m.name;
     tr_->planar = std::is_same_v<Root, planar_root>;
     tr_->q_names = q_coordinate_names(m);
@@ -66,8 +75,7 @@ class trajectory_recorder {
       tr_->contact_names.push_back(c.name);
       tr_->contact_bodies.push_back(c.body);
     }
-    tr_->objective_term_names.clear();
-    for (const auto& n : objective_term_names) tr_->objective_term_names.emplace_back(n);
+    tr_->objective_term_names = su.objective_term_names;
     const auto nb = static_cast<std::size_t>(m.num_bodies());
     const auto nc = m.contact_points.size();
     trajectory_frame proto;
@@ -79,27 +87,58 @@ class trajectory_recorder {
     proto.contact_position.assign(nc, Eigen::Vector3d::Zero());
     proto.contact_force.assign(nc, Eigen::Vector3d::Zero());
     proto.contact_active.assign(nc, 0);
-    proto.pushes.reserve(max_pushes);
     proto.objective_terms.assign(tr_->objective_term_names.size(), 0.0);
-    tr_->frames.assign(static_cast<std::size_t>(std::max<std::int64_t>(max_frames, 0)), proto);
+    const std::int64_t frames = su.horizon_steps / every_ + 1;
+    tr_->frames.assign(static_cast<std::size_t>(std::max<std::int64_t>(frames, 0)), proto);
     // assign() copy-constructs, which does not carry the pushes' capacity over: reserve each.
-    for (auto& f : tr_->frames) f.pushes.reserve(max_pushes);
+    for (auto& f : tr_->frames) f.pushes.reserve(su.max_pushes);
   }
 
-  bool enabled() const { return tr_ != nullptr; }
-  /// Whether physics step k is recorded.
-  bool due(std::int64_t k) const {
-    return tr_ != nullptr && k % every_ == 0 && count_ < tr_->frames.size();
+  template <class Observation>
+  void observe(const Observation& ob) {
+    if (tr_ != nullptr && ob.step % every_ == 0 && count_ < tr_->frames.size()) fill(ob);
   }
-  bool has_room() const { return tr_ != nullptr && count_ < tr_->frames.size(); }
-  /// The next frame to fill (call only when due()).
-  trajectory_frame& next() { return tr_->frames[count_++]; }
 
-  /// Drops unused frames and samples the terrain around the recorded motion (after the loop).
-  template <terrain T>
-  void finish(const T& ground) {
+  /// The state it stopped in (unless already recorded), then trims the unused frames and
+  /// samples the terrain.
+  template <class Observation>
+  void finish(const Observation& ob, const rollout_result&) {
     if (tr_ == nullptr) return;
+    if (ob.final_state_valid && count_ < tr_->frames.size() && last_ != ob.step) fill(ob);
     tr_->frames.resize(count_);
+    sample_terrain(ob.terrain());
+  }
+
+ private:
+  template <class Observation>
+  void fill(const Observation& ob) {
+    const auto& m = ob.model();
+    last_ = ob.step;
+    trajectory_frame& f = tr_->frames[count_++];
+    f.t = ob.t;
+    f.q = ob.q();
+    f.v = ob.v();
+    f.tau = ob.tau();
+    for (int b = 0; b < m.num_bodies(); ++b) {
+      f.body_position[b] = ob.body_position[b];
+      f.body_orientation[b] = Eigen::Quaterniond(ob.body_rotation[b]);
+    }
+    f.com = ob.com;
+    for (std::size_t c = 0; c < m.contact_points.size(); ++c) {
+      const auto& cp = m.contact_points[c];
+      f.contact_position[c] = point_position(m, ob.workspace(), cp.body, cp.position);
+      f.contact_force[c] = ob.contact_force[c];
+      f.contact_active[c] = ob.contact_active[c];
+    }
+    f.pushes.clear();
+    for (const push& p : ob.pushes)
+      if (p.active(ob.t)) f.pushes.emplace_back(p.body, p.force);
+    ob.objective_terms(std::span<double>(f.objective_terms));
+    f.controller_state = ob.controller_state();
+  }
+
+  template <terrain T>
+  void sample_terrain(const T& ground) {
     double x0 = -2, x1 = 2, y0 = -2, y1 = 2;
     for (const auto& f : tr_->frames) {
       x0 = std::min(x0, f.com.x() - 2);
@@ -121,10 +160,10 @@ class trajectory_recorder {
             ground.height(ts.x0 + ix * ts.dx, ts.y0 + iy * ts.dy);
   }
 
- private:
   trajectory* tr_ = nullptr;
   int every_ = 1;
   std::size_t count_ = 0;
+  std::int64_t last_ = -1;
 };
 
 }  // namespace gaitsynth

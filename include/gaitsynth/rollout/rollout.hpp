@@ -55,6 +55,7 @@
 #include "gaitsynth/model/model.hpp"
 #include "gaitsynth/model/state.hpp"
 #include "gaitsynth/objectives/concept.hpp"
+#include "gaitsynth/rollout/observer.hpp"
 #include "gaitsynth/rollout/options.hpp"
 #include "gaitsynth/rollout/policy_states.hpp"
 #include "gaitsynth/rollout/recorder.hpp"
@@ -161,12 +162,13 @@ inline std::int64_t horizon_steps(double duration, double dt) {
 namespace detail {
 /// The rollout itself (rollout() below forwards here with a mutable controller).
 template <root_joint Root, class Actuator, class C, class Objective, terrain Terrain,
-          class Integrator>
+          class Integrator, class Observer>
 rollout_result rollout_impl(const model<Root>& m, const Actuator& act, C& ctrl,
                             const Objective& obj, const Terrain& ground, Integrator& integ,
                             std::span<const double> params, const rollout_options& opt,
                             rollout_scratch<Root>& scr,
-                            rollout_policy_states<Actuator, C, Objective>& states) {
+                            rollout_policy_states<Actuator, C, Objective>& states,
+                            Observer& user_observer) {
   using actuator_state = typename Actuator::state_type;
   // ---------------------------------------------------------------- set-up (may allocate/throw)
   check_positive(opt.dt, "rollout_options::dt (physics timestep, s)");
@@ -250,14 +252,18 @@ rollout_result rollout_impl(const model<Root>& m, const Actuator& act, C& ctrl,
   scr.sensed.setZero();
   scr.history.reset(m.nq(), m.nv(), m.num_bodies(), history_capacity(delay, dt), num_sensed);
 
-  trajectory_recorder rec;
-  {
-    std::vector<std::string> names;  // (only when recording: a worker's rollouts allocate nothing)
+  // Observers: the recorder of options.record (off when null) and the caller's.
+  trajectory_observer recorder(opt.record, opt.record_every);
+  observer_pair<trajectory_observer, Observer> obs{recorder, user_observer};
+  constexpr bool user_observes = !std::is_same_v<std::remove_cv_t<Observer>, null_observer>;
+  if (opt.record != nullptr || user_observes) {
+    observer_setup setup;  // (allocates only when observed: a worker's rollouts allocate nothing)
+    setup.dt = dt;
+    setup.horizon_steps = n_steps;
+    setup.max_pushes = opt.pushes.size();
     if constexpr (objective_with_terms<Objective>)
-      if (opt.record)
-        for (const auto& n : obj.term_names()) names.emplace_back(n);
-    const std::int64_t frames = opt.record ? n_steps / std::max(opt.record_every, 1) + 1 : 0;
-    rec.start(opt.record, m, opt.record_every, frames, names, opt.pushes.size());
+      for (const auto& n : obj.term_names()) setup.objective_term_names.emplace_back(n);
+    obs.start(m, setup);
   }
 
   forward_kinematics(m, ws, s.q, s.v);
@@ -304,7 +310,7 @@ rollout_result rollout_impl(const model<Root>& m, const Actuator& act, C& ctrl,
   sen.sensed = sample.sensed;
   sen.actuator_state_ptr = &act_state;
 
-  step_view_with<Root, actuator_state> view;
+  observation<Root, Objective, C, actuator_state, Terrain> view;  // the objective's step view too
   view.model_ptr = &m;
   view.dt = dt;
   view.q_ptr = &s.q;
@@ -323,6 +329,12 @@ rollout_result rollout_impl(const model<Root>& m, const Actuator& act, C& ctrl,
   view.workspace_ptr = &ws;
   view.contacts_ptr = &scr.contacts;
   view.actuator_state_ptr = &act_state;
+  view.objective_ptr = &obj;
+  view.accumulator_ptr = &acc;
+  view.controller_ptr = &ctrl;
+  view.controller_state_ptr = &ctrl_state;
+  view.terrain_ptr = &ground;
+  view.pushes = std::span<const push>(opt.pushes);
 
   // The system the integrator steps: ABA with the held torques and external wrenches. An
   // integrator that evaluates it first on the unchanged state (integrator_evaluating_state_first)
@@ -370,35 +382,6 @@ rollout_result rollout_impl(const model<Root>& m, const Actuator& act, C& ctrl,
       ddq = aba(m, ws, q, v, tau);
       act.derivative(m, std::as_const(st), cmd, z, zdot);
     }
-  };
-
-  // Fills the next trajectory frame with the state at step k_rec (kinematics current).
-  std::int64_t last_recorded = -1;
-  auto record_frame = [&](std::int64_t k_rec, double t) {
-    last_recorded = k_rec;
-    trajectory_frame& f = rec.next();
-    f.t = t;
-    f.q = s.q;
-    f.v = s.v;
-    f.tau = scr.tau;
-    for (int b = 0; b < m.num_bodies(); ++b) {
-      f.body_position[b] = ws.body_position[b];
-      f.body_orientation[b] = Eigen::Quaterniond(ws.body_rotation[b]);
-    }
-    f.com = res.com_final;
-    for (std::size_t c = 0; c < m.contact_points.size(); ++c) {
-      const auto& cp = m.contact_points[c];
-      f.contact_position[c] = point_position(m, ws, cp.body, cp.position);
-      f.contact_force[c] = scr.contacts.force[c];
-      f.contact_active[c] = scr.contacts.active[c];
-    }
-    f.pushes.clear();
-    for (const push& p : opt.pushes)
-      if (p.active(t)) f.pushes.emplace_back(p.body, p.force);
-    if constexpr (objective_with_terms<Objective>)
-      obj.terms(acc, std::span<double>(f.objective_terms));
-    if constexpr (controller_with_discrete_state<C>)
-      f.controller_state = ctrl.discrete_state(ctrl_state);
   };
 
   // ---------------------------------------------------------------- the step loop: no allocation
@@ -468,7 +451,10 @@ rollout_result rollout_impl(const model<Root>& m, const Actuator& act, C& ctrl,
     view.com_velocity = com_v;
     view.toe_top_contact = scr.contacts.any_toe_top_touching;
     obj.accumulate(acc, static_cast<const step_view_with<Root, actuator_state>&>(view));
-    if (rec.due(k)) record_frame(k, t);
+    if constexpr (user_observes)
+      obs.observe(std::as_const(view));
+    else
+      recorder.observe(std::as_const(view));
     if constexpr (objective_with_done<Objective>) {
       if (obj.done(acc)) {
         reason = stop_reason::objective;
@@ -503,12 +489,18 @@ rollout_result rollout_impl(const model<Root>& m, const Actuator& act, C& ctrl,
   res.time = static_cast<double>(k) * dt;
   s.t = t0 + res.time;
   res.controller_calls = calls;
-  // The state the rollout stopped in is the last frame (a fall ends on the ground).
-  if (rec.enabled() && rec.has_room() && reason != stop_reason::non_finite && last_recorded != k)
-    record_frame(k, t0 + res.time);
-  rec.finish(ground);
+  // The observers see the state the rollout stopped in (a fall ends on the ground).
+  auto finish_observers = [&] {
+    if (opt.record == nullptr && !user_observes) return;
+    view.t = t0 + res.time;
+    view.step = k;
+    view.com = res.com_final;
+    view.final_state_valid = reason != stop_reason::non_finite;
+    obs.finish(std::as_const(view), std::as_const(res));
+  };
   if (reason == stop_reason::non_finite) {
     res.cost = failed_rollout_cost;
+    finish_observers();
     return res;
   }
   rollout_outcome out;
@@ -520,26 +512,35 @@ rollout_result rollout_impl(const model<Root>& m, const Actuator& act, C& ctrl,
   out.com_final = res.com_final;
   res.objective_value = static_cast<double>(obj.finish(std::as_const(acc), out));
   res.cost = std::isnan(res.objective_value) ? failed_rollout_cost : res.objective_value;
+  finish_observers();
   return res;
 }
 }  // namespace detail
 
+/// The observation type a rollout hands its observers (rollout/observer.hpp).
+template <root_joint Root, class Actuator, class Controller, class Objective, class Terrain>
+using observation_for = observation<Root, Objective, std::remove_cvref_t<Controller>,
+                                    typename Actuator::state_type, Terrain>;
+
 /// Runs one rollout. See the file comment for the step order and result.hpp for the cost
 /// convention. The controller is bound to `params` in place (pass one controller per thread); a
-/// const controller is copied first. \throws std::invalid_argument for a bad timestep, duration,
-/// option, initial state, or parameter vector (wrong size, NaN), naming the value. A diverging or
-/// falling rollout is a result, not an exception.
+/// const controller is copied first. `observer` watches every step (rollout/observer.hpp; the
+/// default observes nothing at no cost). \throws std::invalid_argument for a bad timestep,
+/// duration, option, initial state, or parameter vector (wrong size, NaN), naming the value. A
+/// diverging or falling rollout is a result, not an exception.
 template <root_joint Root, class Actuator, class Controller, class Objective, terrain Terrain,
-          class Integrator>
+          class Integrator, class Observer = null_observer>
 requires actuator<Actuator, Root> &&
     controller<std::remove_cvref_t<Controller>, Root,
                sensors_with<Root, typename Actuator::state_type>> &&
     objective<Objective, Root, step_view_with<Root, typename Actuator::state_type>> &&
-    integrator<std::remove_cvref_t<Integrator>, Root>
+    integrator<std::remove_cvref_t<Integrator>, Root> &&
+    rollout_observer<std::remove_reference_t<Observer>,
+                     observation_for<Root, Actuator, Controller, Objective, Terrain>>
         rollout_result rollout(const model<Root>& m, const Actuator& act, Controller&& ctrl,
                                const Objective& obj, const Terrain& ground, Integrator&& integ,
                                std::span<const double> params, const rollout_options& opt,
-                               rollout_scratch<Root>& scr) {
+                               rollout_scratch<Root>& scr, Observer&& observer = {}) {
   using C = std::remove_cvref_t<Controller>;
   using I = std::remove_cvref_t<Integrator>;
   rollout_policy_states<Actuator, C, Objective> states;  // made anew: set-up, may allocate
@@ -549,9 +550,10 @@ requires actuator<Actuator, Root> &&
     // const ones (set-up; may allocate).
     C c(ctrl);
     I i(integ);
-    return detail::rollout_impl(m, act, c, obj, ground, i, params, opt, scr, states);
+    return detail::rollout_impl(m, act, c, obj, ground, i, params, opt, scr, states, observer);
   } else {
-    return detail::rollout_impl(m, act, ctrl, obj, ground, integ, params, opt, scr, states);
+    return detail::rollout_impl(m, act, ctrl, obj, ground, integ, params, opt, scr, states,
+                                observer);
   }
 }
 
@@ -559,29 +561,33 @@ requires actuator<Actuator, Root> &&
 /// place where the policies allow it: rollout/policy_states.hpp), so that repeated rollouts of a
 /// worker allocate nothing. The controller and integrator are used in place (not const).
 template <root_joint Root, class Actuator, class Controller, class Objective, terrain Terrain,
-          class Integrator>
+          class Integrator, class Observer = null_observer>
 requires actuator<Actuator, Root> &&
     controller<Controller, Root, sensors_with<Root, typename Actuator::state_type>> &&
     objective<Objective, Root, step_view_with<Root, typename Actuator::state_type>> &&
-    integrator<Integrator, Root>
+    integrator<Integrator, Root> &&
+    rollout_observer<std::remove_reference_t<Observer>,
+                     observation_for<Root, Actuator, Controller, Objective, Terrain>>
         rollout_result rollout(const model<Root>& m, const Actuator& act, Controller& ctrl,
                                const Objective& obj, const Terrain& ground, Integrator& integ,
                                std::span<const double> params, const rollout_options& opt,
                                rollout_scratch<Root>& scr,
-                               rollout_policy_states<Actuator, Controller, Objective>& states) {
-  return detail::rollout_impl(m, act, ctrl, obj, ground, integ, params, opt, scr, states);
+                               rollout_policy_states<Actuator, Controller, Objective>& states,
+                               Observer&& observer = {}) {
+  return detail::rollout_impl(m, act, ctrl, obj, ground, integ, params, opt, scr, states, observer);
 }
 
 /// Convenience overload for an Eigen parameter vector.
 template <root_joint Root, class Actuator, class Controller, class Objective, terrain Terrain,
-          class Integrator>
+          class Integrator, class Observer = null_observer>
 rollout_result rollout(const model<Root>& m, const Actuator& act, Controller&& ctrl,
                        const Objective& obj, const Terrain& ground, Integrator&& integ,
                        const Eigen::VectorXd& params, const rollout_options& opt,
-                       rollout_scratch<Root>& scr) {
-  return rollout(
-      m, act, std::forward<Controller>(ctrl), obj, ground, std::forward<Integrator>(integ),
-      std::span<const double>(params.data(), static_cast<std::size_t>(params.size())), opt, scr);
+                       rollout_scratch<Root>& scr, Observer&& observer = {}) {
+  return rollout(m, act, std::forward<Controller>(ctrl), obj, ground,
+                 std::forward<Integrator>(integ),
+                 std::span<const double>(params.data(), static_cast<std::size_t>(params.size())),
+                 opt, scr, std::forward<Observer>(observer));
 }
 
 }  // namespace gaitsynth
