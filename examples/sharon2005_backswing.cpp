@@ -4,12 +4,8 @@
 // 24 nodes (12 free x 12 = 144 parameters).
 //
 //   ./sharon2005_backswing [--out DIR] [--threads N] ...
-#include "gaitsynth/actuators/torque.hpp"
-#include "gaitsynth/contact/flat_terrain.hpp"
-#include "gaitsynth/integrators/semi_implicit_euler.hpp"
 #include "gaitsynth/models/sharon2005.hpp"
 #include "gaitsynth/motion/keyframes_json.hpp"
-#include "gaitsynth/objectives/mass_distance.hpp"
 #include "sharon2005_common.hpp"
 
 int main(int argc, char** argv) try {
@@ -17,24 +13,13 @@ int main(int argc, char** argv) try {
   const auto c = sharon_example::parse(
       argc, argv, "optimize the back-swing style walk (Sharon & van de Panne 2005, Fig. 6c)");
   const planar_model m = sharon2005_human7();
-  const std::string kf_path =
-      c.keyframes.empty() ? sharon_example::data_file("backswing.keyframes.json") : c.keyframes;
+  const std::string kf_path = sharon_example::keyframes_path(c, "backswing.keyframes.json");
   const keyframe_motion<planar_root> target = load_keyframes(m, kf_path);
   nearest_neighbor_options o = sharon_example::human7_options();
   o.num_nodes = 24;
   o.max_advance = 1;  // section VI.B: restricted activation order
-  const nearest_neighbor_controller<planar_root> c0 = sharon_example::initial_controller(
-      m, c, nearest_neighbor_controller<planar_root>(m, target, o));
-  rollout_options ro;
-  ro.initial_state = target.initial_state();
-  nn_problem prob{m,
-                  torque_actuator{},
-                  c0,
-                  mass_distance<planar_root>(m, target, sharon_example::style_options(c)),
-                  flat_terrain{},
-                  semi_implicit_euler{},
-                  ro};
-  sharon_example::set_starts(prob, c);
+  const auto c0 = sharon_example::initial_controller(m, target, o, c);
+  const auto prob = sharon_example::make_problem(m, target, c0, c);
   nn_synthesis_options so = sharon_example::synthesis_defaults();
   // The forward-back-forward swing needs more than the usual 2 s: with episodes to 2 s (700
   // evaluations each) the result fell after 4.6 s; to 3 s with 1000 each it walks 70 s

@@ -1,8 +1,8 @@
 #pragma once
 // Shared plumbing of the examples/sharon2005_*.cpp programs (Sharon & van de Panne 2005): command
-// line, the synthesis run with progress, the paper's 70 s check, and the outputs every example
-// writes: the optimized controller (JSON), the 70 s trajectory (CSV) and a one-line JSON summary
-// on stdout. Everything else goes to stderr.
+// line, the problem they optimize (make_problem), the synthesis run with progress, the paper's 70 s
+// check, and the outputs every example writes: the optimized controller (JSON), the 70 s trajectory
+// (CSV) and a one-line JSON summary on stdout. Everything else goes to stderr.
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
@@ -14,8 +14,13 @@
 #include <string>
 #include <vector>
 
+#include "gaitsynth/actuators/torque.hpp"
+#include "gaitsynth/contact/flat_terrain.hpp"
 #include "gaitsynth/controllers/nearest_neighbor_json.hpp"
+#include "gaitsynth/integrators/semi_implicit_euler.hpp"
 #include "gaitsynth/io/trajectory_csv.hpp"
+#include "gaitsynth/model/model.hpp"
+#include "gaitsynth/motion/keyframes.hpp"
 #include "gaitsynth/objectives/mass_distance.hpp"
 #include "gaitsynth/synthesis/nearest_neighbor_synthesis.hpp"
 #include "viewer_flags.hpp"
@@ -185,6 +190,11 @@ inline std::string data_file(const std::string& name) {
   return std::string(GAITSYNTH_SOURCE_DIR) + "/data/sharon2005/" + name;
 }
 
+/// The target motion's file: --keyframes FILE, or data/sharon2005/<default_file>.
+inline std::string keyframes_path(const cli& c, const std::string& default_file) {
+  return c.keyframes.empty() ? data_file(default_file) : c.keyframes;
+}
+
 /// The mass-distance options of the cost (--align-style).
 inline gaitsynth::mass_distance_options style_options(const cli& c) {
   gaitsynth::mass_distance_options o;
@@ -192,12 +202,17 @@ inline gaitsynth::mass_distance_options style_options(const cli& c) {
   return o;
 }
 
-/// The controller the search starts from: the one built along the keyframes (c0), or the saved
-/// controller of --initial-controller (which must fit the same model and node layout).
-template <class Model, class Controller>
-Controller initial_controller(const Model& m, const cli& c, Controller c0) {
+/// The controller the search starts from: the one built along the target motion with options o
+/// (c0), or the saved controller of --initial-controller (which must fit the same model and node
+/// layout).
+inline gaitsynth::nearest_neighbor_controller<gaitsynth::planar_root> initial_controller(
+    const gaitsynth::planar_model& m,
+    const gaitsynth::keyframe_motion<gaitsynth::planar_root>& target,
+    const gaitsynth::nearest_neighbor_options& o, const cli& c) {
+  using controller = gaitsynth::nearest_neighbor_controller<gaitsynth::planar_root>;
+  controller c0(m, target, o);
   if (c.initial_controller.empty()) return c0;
-  Controller loaded = gaitsynth::load_nearest_neighbor(m, c.initial_controller);
+  controller loaded = gaitsynth::load_nearest_neighbor(m, c.initial_controller);
   if (loaded.num_parameters() != c0.num_parameters())
     throw std::invalid_argument("--initial-controller " + c.initial_controller + " has " +
                                 std::to_string(loaded.num_parameters()) +
@@ -214,6 +229,24 @@ void set_starts(Problem& prob, const cli& c) {
     prob.starts.clear();
   else
     prob.starts = gaitsynth::perturbed_starts(prob.character, prob.options.initial_state);
+}
+
+/// The problem every example optimizes: controller c0 on model m with torque actuators and
+/// semi-implicit Euler on `ground`, the mass-distance cost to `target` (eqs. 2-3; --align-style),
+/// from the target's first keyframe and, unless --single-start, perturbed copies of it.
+template <class Terrain = gaitsynth::flat_terrain>
+auto make_problem(const gaitsynth::planar_model& m,
+                  const gaitsynth::keyframe_motion<gaitsynth::planar_root>& target,
+                  const gaitsynth::nearest_neighbor_controller<gaitsynth::planar_root>& c0,
+                  const cli& c, const Terrain& ground = Terrain()) {
+  using namespace gaitsynth;
+  rollout_options ro;
+  ro.initial_state = target.initial_state();
+  nn_problem prob{
+      m,      torque_actuator{},     c0, mass_distance<planar_root>(m, target, style_options(c)),
+      ground, semi_implicit_euler{}, ro};
+  set_starts(prob, c);
+  return prob;
 }
 
 /// The viewer flags (--html, --filmstrip, ...; viewer_flags.hpp) for the check rollout; the

@@ -2,12 +2,8 @@
 // exaggerated knee lift, 24 nodes (12 free x 12 = 144 parameters).
 //
 //   ./sharon2005_high_knee [--out DIR] [--threads N] ...
-#include "gaitsynth/actuators/torque.hpp"
-#include "gaitsynth/contact/flat_terrain.hpp"
-#include "gaitsynth/integrators/semi_implicit_euler.hpp"
 #include "gaitsynth/models/sharon2005.hpp"
 #include "gaitsynth/motion/keyframes_json.hpp"
-#include "gaitsynth/objectives/mass_distance.hpp"
 #include "sharon2005_common.hpp"
 
 int main(int argc, char** argv) try {
@@ -15,23 +11,12 @@ int main(int argc, char** argv) try {
   const auto c = sharon_example::parse(
       argc, argv, "optimize the high-knee style walk (Sharon & van de Panne 2005, Fig. 6a)");
   const planar_model m = sharon2005_human7();
-  const std::string kf_path =
-      c.keyframes.empty() ? sharon_example::data_file("high_knee.keyframes.json") : c.keyframes;
+  const std::string kf_path = sharon_example::keyframes_path(c, "high_knee.keyframes.json");
   const keyframe_motion<planar_root> target = load_keyframes(m, kf_path);
   nearest_neighbor_options o = sharon_example::human7_options();
   o.num_nodes = 24;
-  const nearest_neighbor_controller<planar_root> c0 = sharon_example::initial_controller(
-      m, c, nearest_neighbor_controller<planar_root>(m, target, o));
-  rollout_options ro;
-  ro.initial_state = target.initial_state();
-  nn_problem prob{m,
-                  torque_actuator{},
-                  c0,
-                  mass_distance<planar_root>(m, target, sharon_example::style_options(c)),
-                  flat_terrain{},
-                  semi_implicit_euler{},
-                  ro};
-  sharon_example::set_starts(prob, c);
+  const auto c0 = sharon_example::initial_controller(m, target, o, c);
+  const auto prob = sharon_example::make_problem(m, target, c0, c);
   nn_synthesis_options so = sharon_example::synthesis_defaults();
   so.evaluations_per_episode = 700;  // 144 parameters: about 2.5 sweeps per episode
   return sharon_example::synthesize_and_report("sharon2005_high_knee", prob, so, c,

@@ -6,12 +6,8 @@
 // (the root, which carries the hips) to the target's orientation.
 //
 //   ./sharon2005_human16 [--out DIR] [--threads N] ...
-#include "gaitsynth/actuators/torque.hpp"
-#include "gaitsynth/contact/flat_terrain.hpp"
-#include "gaitsynth/integrators/semi_implicit_euler.hpp"
 #include "gaitsynth/models/sharon2005.hpp"
 #include "gaitsynth/motion/keyframes_json.hpp"
-#include "gaitsynth/objectives/mass_distance.hpp"
 #include "sharon2005_common.hpp"
 
 int main(int argc, char** argv) try {
@@ -19,22 +15,11 @@ int main(int argc, char** argv) try {
   const auto c = sharon_example::parse(
       argc, argv, "optimize a walk of the 16-link human (Sharon & van de Panne 2005, Fig. 5c)");
   const planar_model m = sharon2005_human16();
-  const std::string kf_path =
-      c.keyframes.empty() ? sharon_example::data_file("human16_walk.keyframes.json") : c.keyframes;
+  const std::string kf_path = sharon_example::keyframes_path(c, "human16_walk.keyframes.json");
   const keyframe_motion<planar_root> target = load_keyframes(m, kf_path);
   const nearest_neighbor_options o = sharon_example::human16_options(m);
-  const nearest_neighbor_controller<planar_root> c0 = sharon_example::initial_controller(
-      m, c, nearest_neighbor_controller<planar_root>(m, target, o));
-  rollout_options ro;
-  ro.initial_state = target.initial_state();
-  nn_problem prob{m,
-                  torque_actuator{},
-                  c0,
-                  mass_distance<planar_root>(m, target, sharon_example::style_options(c)),
-                  flat_terrain{},
-                  semi_implicit_euler{},
-                  ro};
-  sharon_example::set_starts(prob, c);
+  const auto c0 = sharon_example::initial_controller(m, target, o, c);
+  const auto prob = sharon_example::make_problem(m, target, c0, c);
   return sharon_example::synthesize_and_report("sharon2005_human16", prob,
                                                sharon_example::synthesis_defaults(), c,
                                                {{"keyframes", kf_path}, {"figure", "5c"}});

@@ -37,14 +37,10 @@ int main(int argc, char** argv) try {
       argc, argv,
       "optimize a normal walk of the 7-link human (Sharon & van de Panne 2005, Fig. 5a)");
   const planar_model m = sharon2005_human7();
-  const std::string kf_path =
-      c.keyframes.empty() ? sharon_example::data_file("normal_walk.keyframes.json") : c.keyframes;
+  const std::string kf_path = sharon_example::keyframes_path(c, "normal_walk.keyframes.json");
   const keyframe_motion<planar_root> target = load_keyframes(m, kf_path);
 
-  nearest_neighbor_controller<planar_root> c0 = sharon_example::initial_controller(
-      m, c, nearest_neighbor_controller<planar_root>(m, target, sharon_example::human7_options()));
-  rollout_options ro;
-  ro.initial_state = target.initial_state();
+  auto c0 = sharon_example::initial_controller(m, target, sharon_example::human7_options(), c);
   const nlohmann::ordered_json extra{{"keyframes", kf_path}, {"figure", "5a"}};
 
   // The default run: stage 1 (flat ground, episodes 0.2 .. 2 s), then stage 2 below.
@@ -53,14 +49,7 @@ int main(int argc, char** argv) try {
   sharon_example::cli args = c;
   sharon_example::earlier_stages before;
   if (two_stages) {
-    nn_problem flat{m,
-                    torque_actuator{},
-                    c0,
-                    mass_distance<planar_root>(m, target, sharon_example::style_options(c)),
-                    flat_terrain{},
-                    semi_implicit_euler{},
-                    ro};
-    sharon_example::set_starts(flat, c);
+    const auto flat = sharon_example::make_problem(m, target, c0, c);
     nn_synthesis_options so = sharon_example::synthesis_defaults();
     so.threads = c.threads;
     if (c.evaluations_per_episode >= 0) so.evaluations_per_episode = c.evaluations_per_episode;
@@ -83,14 +72,7 @@ int main(int argc, char** argv) try {
     if (c.evaluations_per_episode < 0) args.evaluations_per_episode = 300;
   }
 
-  nn_problem prob{m,
-                  torque_actuator{},
-                  c0,
-                  mass_distance<planar_root>(m, target, sharon_example::style_options(c)),
-                  flat_terrain{},
-                  semi_implicit_euler{},
-                  ro};
-  sharon_example::set_starts(prob, c);
+  auto prob = sharon_example::make_problem(m, target, c0, c);
   auto run = [&](const auto& problem) {
     return sharon_example::synthesize_and_report("sharon2005_normal_walk", problem,
                                                  sharon_example::synthesis_defaults(), args, extra,
@@ -103,7 +85,7 @@ int main(int argc, char** argv) try {
   std::vector<bumpy_problem> bumpy;
   const int n_bumpy = std::max(args.bumpy_training, 0);
   for (const auto& ground : sharon_scenarios::training_terrains(n_bumpy)) {
-    rollout_options rb = ro;
+    rollout_options rb = prob.options;
     rb.initial_state = target_start_states(m, target, ground, {0.0}).front();
     bumpy.push_back(
         bumpy_problem{m, torque_actuator{}, c0,
@@ -119,7 +101,7 @@ int main(int argc, char** argv) try {
   std::vector<body_problem> changed;
   for (const auto& p : sharon_scenarios::training_bodies(n_bodies)) {
     bodies.push_back(sharon2005_human7(p));
-    rollout_options rb = ro;
+    rollout_options rb = prob.options;
     rb.initial_state = sharon_scenarios::start_state_for(bodies.back(), target);
     changed.push_back(body_problem{
         bodies.back(), torque_actuator{}, c0,

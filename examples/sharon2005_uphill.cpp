@@ -5,12 +5,9 @@
 //   ./sharon2005_uphill [--out DIR] [--threads N] ...
 #include <numbers>
 
-#include "gaitsynth/actuators/torque.hpp"
 #include "gaitsynth/contact/slope_terrain.hpp"
-#include "gaitsynth/integrators/semi_implicit_euler.hpp"
 #include "gaitsynth/models/sharon2005.hpp"
 #include "gaitsynth/motion/keyframes_json.hpp"
-#include "gaitsynth/objectives/mass_distance.hpp"
 #include "sharon2005_common.hpp"
 
 int main(int argc, char** argv) try {
@@ -18,19 +15,12 @@ int main(int argc, char** argv) try {
   const auto c = sharon_example::parse(
       argc, argv, "optimize a walk up a 10 degree slope (Sharon & van de Panne 2005, Fig. 7)");
   const planar_model m = sharon2005_human7();
-  const std::string kf_path =
-      c.keyframes.empty() ? sharon_example::data_file("uphill.keyframes.json") : c.keyframes;
+  const std::string kf_path = sharon_example::keyframes_path(c, "uphill.keyframes.json");
   const keyframe_motion<planar_root> target = load_keyframes(m, kf_path);
-  const nearest_neighbor_controller<planar_root> c0 = sharon_example::initial_controller(
-      m, c, nearest_neighbor_controller<planar_root>(m, target, sharon_example::human7_options()));
-  rollout_options ro;
-  ro.initial_state = target.initial_state();
+  const auto c0 =
+      sharon_example::initial_controller(m, target, sharon_example::human7_options(), c);
   const slope_terrain hill(10.0 * std::numbers::pi / 180.0);
-  nn_problem prob{m,    torque_actuator{},
-                  c0,   mass_distance<planar_root>(m, target, sharon_example::style_options(c)),
-                  hill, semi_implicit_euler{},
-                  ro};
-  sharon_example::set_starts(prob, c);
+  const auto prob = sharon_example::make_problem(m, target, c0, c, hill);
   return sharon_example::synthesize_and_report(
       "sharon2005_uphill", prob, sharon_example::synthesis_defaults(), c,
       {{"keyframes", kf_path}, {"figure", "7a"}, {"slope_degrees", 10.0}});
