@@ -62,6 +62,7 @@
 #include "gaitsynth/objectives/mass_distance.hpp"
 #include "gaitsynth/objectives/weighted_sum.hpp"
 
+#include "gaitsynth/rollout/observer.hpp"
 #include "gaitsynth/rollout/options.hpp"
 #include "gaitsynth/rollout/policy_states.hpp"
 #include "gaitsynth/rollout/problem.hpp"

@@ -116,6 +116,14 @@ template <class A, class Root>
 concept actuator_with_continuous_state =
     actuator_with_derivative<A, Root> && std::same_as<typename A::state_type, Eigen::VectorXd>;
 
+/// Optional: a.reset_state(m, st) makes st what make_state(m) returns, without allocating (a
+/// worker's next rollout: rollout/policy_states.hpp).
+template <class A, class Root>
+concept actuator_with_reset_state = requires(const A& a, const model<Root>& m,
+                                             typename A::state_type& st) {
+  a.reset_state(m, st);
+};
+
 /// Optional: values the actuator exposes to controllers, now and with neural delays
 /// (sensors::sensed, sensors::delayed_sensed): normalized muscle force and fiber length for the
 /// reflexes of Wang et al. 2012. sensed_size(m) at set-up; sense(m, st, out) once per physics step

@@ -68,6 +68,14 @@ template <class C, class Root>
 concept controller_with_initial_state = requires(const C& c, const model<Root>& m, sim_state& s) {
   c.initial_state(m, s);
 };
+/// Optional: c.reset_state(m, st) makes st what make_state(m) returns, without allocating (a
+/// worker's next rollout: rollout/policy_states.hpp).
+template <class C, class Root>
+concept controller_with_reset_state = requires(const C& c, const model<Root>& m,
+                                               typename C::state_type& st) {
+  c.reset_state(m, st);
+};
+
 template <class C>
 concept controller_with_discrete_state = requires(const C& c, const typename C::state_type& st) {
   { c.discrete_state(st) } -> std::convertible_to<int>;

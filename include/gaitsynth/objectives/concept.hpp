@@ -126,4 +126,10 @@ concept objective_with_terms = requires(const O& o, const typename O::accumulato
   o.terms(acc, out);
 };
 
+template <class O, class Root>
+concept objective_with_reset = requires(const O& o, const model<Root>& m,
+                                        typename O::accumulator_type& acc) {
+  o.reset_accumulator(m, acc);
+};
+
 }  // namespace gaitsynth

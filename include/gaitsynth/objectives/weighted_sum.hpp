@@ -18,7 +18,6 @@
 
 #include "gaitsynth/error.hpp"
 #include "gaitsynth/objectives/concept.hpp"
-#include "gaitsynth/rollout/policy_states.hpp"
 
 namespace gaitsynth {
 

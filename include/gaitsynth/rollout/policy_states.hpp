@@ -14,26 +14,13 @@
 #include <cstdint>
 #include <optional>
 
+#include "gaitsynth/actuators/concept.hpp"
+#include "gaitsynth/controllers/concept.hpp"
 #include "gaitsynth/model/fingerprint.hpp"
 #include "gaitsynth/model/model.hpp"
+#include "gaitsynth/objectives/concept.hpp"
 
 namespace gaitsynth {
-
-template <class A, class Root>
-concept actuator_with_reset_state = requires(const A& a, const model<Root>& m,
-                                             typename A::state_type& st) {
-  a.reset_state(m, st);
-};
-template <class C, class Root>
-concept controller_with_reset_state = requires(const C& c, const model<Root>& m,
-                                               typename C::state_type& st) {
-  c.reset_state(m, st);
-};
-template <class O, class Root>
-concept objective_with_reset = requires(const O& o, const model<Root>& m,
-                                        typename O::accumulator_type& acc) {
-  o.reset_accumulator(m, acc);
-};
 
 template <class Actuator, class Controller, class Objective>
 struct rollout_policy_states {

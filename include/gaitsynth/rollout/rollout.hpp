@@ -11,23 +11,30 @@
 ///                              params, options, scratch);
 ///
 /// Set-up (may allocate, may throw std::invalid_argument naming the bad value): validate dt and the
-/// options, controller.bind(params), create the policies' states, size the command, place the
-/// initial state, size the sensor history and the recorder.
+/// options, controller.bind(params), check the command kinds, rebuild the scratch if the model's
+/// fingerprint changed, make or reset the policies' states (rollout/policy_states.hpp), size the
+/// command, place the initial state, size the sensor history, start the observers.
 ///
 /// Step k (t = t0 + k dt, computed, never accumulated, as Odeint's integrate_const does):
 ///   1. forward kinematics of (q, v); COM and COM velocity;
 ///   2. stop if fallen (COM below the fall height above the terrain) or k reached the horizon;
 ///   3. clear external wrenches; penalty contact against the terrain; pushes (into ws.f_ext) — done
 ///      before sensing so that controllers see this step's contact flags;
-///   4. sense (and push the sample into the delay history); once per controller period, the
-///      controller writes the command (held in between);
-///   5. the actuator maps the command to joint torques; passive joint-limit torques are added;
+///   4. the actuator's sensed values; push the sample into the delay history; once per controller
+///      period, the controller writes the command (held in between). Controllers read the step's
+///      workspace and contact state through const views;
+///   5. the actuator maps the command to joint torques (optionally reading the workspace);
+///      passive joint-limit torques are added;
 ///   6. the objective accumulates this step (its view: state at t, torques and contact forces held
-///      over [t, t + dt)); record a frame if due; stop if the objective is done;
+///      over [t, t + dt)); the observers observe it (the recorder stores a frame if due); stop if
+///      the objective is done;
 ///   7. the integrator advances (q, v) with accelerations from ABA (torques and external wrenches
-///      held constant over the step: zero-order hold, also for the stages of RK4);
-///      the actuator's own state advances;
+///      held constant over the step: zero-order hold, also for the stages of RK4). An actuator with
+///      continuous dynamics (a derivative and a vector state) is integrated with (q, v) in the
+///      same system, its torques re-evaluated at every stage; otherwise its state advances after
+///      the step (advance, or an explicit Euler step of derivative);
 ///   8. stop if q or v is no longer finite (cost +infinity; rollout/result.hpp).
+/// After the loop the observers see the state it stopped in, with the result.
 #include <Eigen/Core>
 #include <cmath>
 #include <cstdint>
