@@ -71,26 +71,6 @@ void mirror_configuration(const model<Root>& m, const Eigen::Ref<const Eigen::Ve
     out[nr + j] = m.mirror_sign[j] * q[nr + m.mirror_dof[j]];
 }
 
-/// Same for a velocity vector v (model.nv()). A floating root's world linear velocity maps
-/// (vx, vy, vz) -> (vx, -vy, vz); its body-frame angular velocity (wx, wy, wz) -> (-wx, wy, -wz).
-template <root_joint Root>
-void mirror_velocity(const model<Root>& m, const Eigen::Ref<const Eigen::VectorXd>& v,
-                     Eigen::Ref<Eigen::VectorXd> out) {
-  constexpr int nr = Root::nv;
-  if constexpr (nr == 6) {
-    out[0] = v[0];
-    out[1] = -v[1];
-    out[2] = v[2];
-    out[3] = -v[3];
-    out[4] = v[4];
-    out[5] = -v[5];
-  } else {
-    for (int i = 0; i < nr; ++i) out[i] = v[i];
-  }
-  for (int j = 0; j < m.num_joint_dofs(); ++j)
-    out[nr + j] = m.mirror_sign[j] * v[nr + m.mirror_dof[j]];
-}
-
 /// A cyclic keyframe target motion. Immutable after construction (shared by threads); pose queries
 /// write into caller-provided vectors and never allocate.
 template <root_joint Root>
