@@ -129,13 +129,6 @@ approx_matcher is_approx(const Eigen::MatrixBase<Derived>& expected, double rtol
   return approx_matcher(Eigen::MatrixXd(expected), rtol, atol);
 }
 
-/// Largest absolute difference relative to max(1, |b|_max).
-template <class A, class B>
-double rel_error(const Eigen::MatrixBase<A>& a, const Eigen::MatrixBase<B>& b) {
-  if (a.size() == 0) return 0.0;
-  return (a - b).cwiseAbs().maxCoeff() / std::max(1.0, b.cwiseAbs().maxCoeff());
-}
-
 }  // namespace gaitsynth::testing
 
 namespace Catch {
