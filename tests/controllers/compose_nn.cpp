@@ -159,7 +159,7 @@ rollout_result run_one(const M& m, const A& act, Ctrl ctrl, const Obj& obj,
 TEMPLATE_LIST_TEST_CASE(
     "nearest-neighbor controller and mass-distance objective compose with "
     "every character and actuator",
-    "[sharon2005][compose]", all_combinations) {
+    "[controllers][compose]", all_combinations) {
   using C = TestType;
   using Root = typename C::character::root;
   const auto m = C::character::build();
@@ -197,7 +197,7 @@ TEMPLATE_LIST_TEST_CASE(
 }
 
 TEST_CASE("mass-distance objective inside CMA-ES (nearest-neighbor controller, 7-link human)",
-          "[sharon2005][compose][cmaes]") {
+          "[controllers][compose][cmaes]") {
   const planar_model m = sharon2005_human7();
   const auto target = load_keyframes(
       m, std::string(GAITSYNTH_SOURCE_DIR) + "/data/sharon2005/normal_walk.keyframes.json");
@@ -237,7 +237,7 @@ TEST_CASE("mass-distance objective inside CMA-ES (nearest-neighbor controller, 7
 }
 
 TEST_CASE("a problem with variants adds the variants' costs, on other terrain types",
-          "[sharon2005][synthesis][variants]") {
+          "[controllers][synthesis][variants]") {
   const planar_model m = sharon2005_human7();
   const auto target = load_keyframes(
       m, std::string(GAITSYNTH_SOURCE_DIR) + "/data/sharon2005/normal_walk.keyframes.json");

@@ -23,7 +23,7 @@ nearest_neighbor_options labels_only(nearest_neighbor_options o = {}) {
 }
 }  // namespace
 
-TEST_CASE("nearest neighbor: initialization along the target motion", "[sharon2005][nn]") {
+TEST_CASE("nearest neighbor: initialization along the target motion", "[controllers][nn]") {
   const auto m = small_biped();
   const auto walk = small_walk(m);
   nearest_neighbor_options o;
@@ -49,7 +49,7 @@ TEST_CASE("nearest neighbor: initialization along the target motion", "[sharon20
   }
 }
 
-TEST_CASE("nearest neighbor: eq. 1 selection equals a brute-force weighted search", "[sharon2005][nn]") {
+TEST_CASE("nearest neighbor: eq. 1 selection equals a brute-force weighted search", "[controllers][nn]") {
   const auto m = small_biped();
   std::mt19937 rng(7);
   std::uniform_real_distribution<double> U(-1.0, 1.0);
@@ -81,7 +81,7 @@ TEST_CASE("nearest neighbor: eq. 1 selection equals a brute-force weighted searc
   }
 }
 
-TEST_CASE("nearest neighbor: symmetric nodes, only half are free", "[sharon2005][nn]") {
+TEST_CASE("nearest neighbor: symmetric nodes, only half are free", "[controllers][nn]") {
   const auto m = small_biped();
   const NN c0(m, small_walk(m), labels_only());
   NN c = c0;
@@ -124,7 +124,7 @@ TEST_CASE("nearest neighbor: symmetric nodes, only half are free", "[sharon2005]
   CHECK_THROWS_WITH(c.bind(bad), Catch::Contains("parameter 5 is not finite"));
 }
 
-TEST_CASE("nearest neighbor: restricted activation order", "[sharon2005][nn]") {
+TEST_CASE("nearest neighbor: restricted activation order", "[controllers][nn]") {
   const auto m = small_biped();
   nearest_neighbor_options o;
   o.max_advance = 1;
@@ -166,7 +166,7 @@ TEST_CASE("nearest neighbor: restricted activation order", "[sharon2005][nn]") {
   CHECK(s2.active == 0);
 }
 
-TEST_CASE("nearest neighbor: PD servos, torso servo on the stance hip, torque limit", "[sharon2005][nn]") {
+TEST_CASE("nearest neighbor: PD servos, torso servo on the stance hip, torque limit", "[controllers][nn]") {
   const auto m = small_biped();
   nearest_neighbor_options o;
   o.default_kp = 500;
@@ -229,7 +229,7 @@ TEST_CASE("nearest neighbor: PD servos, torso servo on the stance hip, torque li
   CHECK(std::abs(tau[1]) == Approx(370));
 }
 
-TEST_CASE("nearest neighbor: bad options are named", "[sharon2005][nn]") {
+TEST_CASE("nearest neighbor: bad options are named", "[controllers][nn]") {
   const auto m = small_biped();
   const auto w = small_walk(m);
   nearest_neighbor_options o;
@@ -258,7 +258,7 @@ TEST_CASE("nearest neighbor: bad options are named", "[sharon2005][nn]") {
   CHECK_THROWS_WITH(NN(m, w, o), Catch::Contains("no body named 'lfoot'"));
 }
 
-TEST_CASE("nearest neighbor: JSON round trip is exact", "[sharon2005][nn][json]") {
+TEST_CASE("nearest neighbor: JSON round trip is exact", "[controllers][nn][json]") {
   const auto m = small_biped();
   nearest_neighbor_options o;
   o.max_advance = 2;

@@ -109,7 +109,7 @@ Eigen::Matrix3d axis_rotation(const std::string& ch, double deg) {
 
 }  // namespace
 
-TEST_CASE("euler_zxy and rotation_zxy are inverse", "[viz][bvh]") {
+TEST_CASE("euler_zxy and rotation_zxy are inverse", "[io][bvh]") {
   std::mt19937 rng(7);
   std::uniform_real_distribution<double> u(-1, 1);
   for (int k = 0; k < 200; ++k) {
@@ -124,7 +124,7 @@ TEST_CASE("euler_zxy and rotation_zxy are inverse", "[viz][bvh]") {
   CHECK((rotation_zxy(euler_zxy(L)) - L).norm() < 1e-9);
 }
 
-TEST_CASE("BVH: hierarchy, frame count and motion match the trajectory", "[viz][bvh]") {
+TEST_CASE("BVH: hierarchy, frame count and motion match the trajectory", "[io][bvh]") {
   const auto m = viz_test::make_biped<floating_root>();
   const auto traj = viz_test::make_walk(m, 1.0, 0.01);
   for (bool y_up : {true, false}) {
@@ -195,7 +195,7 @@ TEST_CASE("BVH: hierarchy, frame count and motion match the trajectory", "[viz][
   }
 }
 
-TEST_CASE("BVH: resampling and bad input", "[viz][bvh]") {
+TEST_CASE("BVH: resampling and bad input", "[io][bvh]") {
   const auto m = viz_test::make_biped<planar_root>();
   const auto traj = viz_test::make_walk(m, 1.0, 0.01);
   std::ostringstream os;

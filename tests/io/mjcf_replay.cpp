@@ -30,7 +30,7 @@ std::size_t count(const std::string& s, const std::string& what) {
 }
 }  // namespace
 
-TEST_CASE("MJCF keyframes: qpos and qvel in MuJoCo's order", "[viz][mjcf]") {
+TEST_CASE("MJCF keyframes: qpos and qvel in MuJoCo's order", "[io][mjcf_replay]") {
   const auto m = viz_test::make_biped<floating_root>();
   const auto traj = viz_test::make_walk(m, 1.0, 0.01);
   std::ostringstream os;
@@ -59,7 +59,7 @@ TEST_CASE("MJCF keyframes: qpos and qvel in MuJoCo's order", "[viz][mjcf]") {
                     Catch::Contains("max_keys"));
 }
 
-TEST_CASE("MJCF replay: the exported model with the keys inside", "[viz][mjcf]") {
+TEST_CASE("MJCF replay: the exported model with the keys inside", "[io][mjcf_replay]") {
   const auto m = viz_test::make_biped<planar_root>();
   const auto traj = viz_test::make_walk(m, 0.5, 0.01);
   mjcf_replay_options o;

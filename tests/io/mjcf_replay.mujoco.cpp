@@ -48,7 +48,7 @@ void check_replay_in_mujoco(const model<Root>& m, const trajectory& traj) {
 }
 }  // namespace
 
-TEST_CASE("MJCF replay: MuJoCo's key k reproduces frame k", "[viz][mjcf][mujoco]") {
+TEST_CASE("MJCF replay: MuJoCo's key k reproduces frame k", "[io][mjcf_replay][mujoco]") {
   const auto planar = viz_test::make_biped<planar_root>();
   check_replay_in_mujoco(planar, viz_test::make_walk(planar, 0.6, 0.02));
   const auto floating = viz_test::make_biped<floating_root>();

@@ -1,5 +1,5 @@
-// Unit tests of the cyclic keyframe target motion (controllers/keyframes.hpp) and of its JSON form
-// (io/keyframes_json.hpp): interpolation, periodic continuation with mirroring and advance, the
+// Unit tests of the cyclic keyframe target motion (motion/keyframes.hpp) and of its JSON form
+// (motion/keyframes_json.hpp): interpolation, periodic continuation with mirroring and advance, the
 // initial state, and the error messages for malformed / inconsistent files.
 #include <catch2/catch.hpp>
 #include <cmath>
@@ -45,7 +45,7 @@ keyframe_motion<planar_root> two_key_walk(const planar_model& m) {
 
 }  // namespace
 
-TEST_CASE("keyframe motion interpolates linearly between keyframes", "[sharon2005][keyframes]") {
+TEST_CASE("keyframe motion interpolates linearly between keyframes", "[motion][keyframes]") {
   const auto m = small_biped();
   const auto mo = two_key_walk(m);
   Eigen::VectorXd q(m.nq());
@@ -60,7 +60,7 @@ TEST_CASE("keyframe motion interpolates linearly between keyframes", "[sharon200
   CHECK(mo.speed() == Approx(1.2));
 }
 
-TEST_CASE("keyframe motion mirrors odd steps and advances the root", "[sharon2005][keyframes]") {
+TEST_CASE("keyframe motion mirrors odd steps and advances the root", "[motion][keyframes]") {
   const auto m = small_biped();
   const auto mo = two_key_walk(m);
   Eigen::VectorXd q(m.nq());
@@ -93,7 +93,7 @@ TEST_CASE("keyframe motion mirrors odd steps and advances the root", "[sharon200
   CHECK(mo.cycle_keyframes().size() == 4);
 }
 
-TEST_CASE("keyframe velocity is the slope of the interpolation; initial state", "[sharon2005][keyframes]") {
+TEST_CASE("keyframe velocity is the slope of the interpolation, and the initial state", "[motion][keyframes]") {
   const auto m = small_biped();
   const auto mo = two_key_walk(m);
   Eigen::VectorXd v(m.nv()), qa(m.nq()), qb(m.nq());
@@ -112,7 +112,7 @@ TEST_CASE("keyframe velocity is the slope of the interpolation; initial state", 
   CHECK(s.t == 0.0);
 }
 
-TEST_CASE("keyframe motion rejects bad keyframes", "[sharon2005][keyframes]") {
+TEST_CASE("keyframe motion rejects bad keyframes", "[motion][keyframes]") {
   const auto m = small_biped();
   const Eigen::VectorXd q = Eigen::VectorXd::Zero(m.nq());
   using KM = keyframe_motion<planar_root>;
@@ -127,7 +127,7 @@ TEST_CASE("keyframe motion rejects bad keyframes", "[sharon2005][keyframes]") {
 }
 
 TEST_CASE("mirror_configuration of a floating root flips y and the lateral quaternion parts",
-          "[sharon2005][keyframes]") {
+          "[motion][keyframes]") {
   model_builder<floating_root> b("tiny3d");
   const Eigen::Matrix3d I = Eigen::Vector3d(0.1, 0.1, 0.1).asDiagonal();
   b.add_body({.name = "pelvis", .mass = 10, .inertia = I});
@@ -174,7 +174,7 @@ std::string replace(std::string s, const std::string& from, const std::string& t
 }
 }  // namespace
 
-TEST_CASE("keyframes JSON: reads names, degrees, defaults and arrays", "[sharon2005][keyframes][json]") {
+TEST_CASE("keyframes JSON: reads names, degrees, defaults and arrays", "[motion][keyframes][json]") {
   const auto m = small_biped();
   const auto mo = parse_keyframes(m, good_json, "walk.json");
   REQUIRE(mo.num_keyframes() == 2);
@@ -196,7 +196,7 @@ TEST_CASE("keyframes JSON: reads names, degrees, defaults and arrays", "[sharon2
   CHECK(back.advance()[0] == 0.6);
 }
 
-TEST_CASE("keyframes JSON: clear errors naming the value and its location", "[sharon2005][keyframes][json]") {
+TEST_CASE("keyframes JSON: clear errors naming the value and its location", "[motion][keyframes][json]") {
   const auto m = small_biped();
   const std::string g = good_json;
   auto err = [&](const std::string& text) {

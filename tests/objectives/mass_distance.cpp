@@ -26,7 +26,7 @@ double delta(const planar_model& m, const Eigen::VectorXd& qa, const Eigen::Vect
 }
 }  // namespace
 
-TEST_CASE("mass distance: point masses at the link ends", "[sharon2005][mass_distance]") {
+TEST_CASE("mass distance: point masses at the link ends", "[objectives][mass_distance]") {
   const auto m = small_biped();
   const auto pts = link_end_points(m);
   REQUIRE(pts.size() == 10);
@@ -39,7 +39,7 @@ TEST_CASE("mass distance: point masses at the link ends", "[sharon2005][mass_dis
   CHECK(total == Approx(m.total_mass()));
 }
 
-TEST_CASE("mass distance: eq. 2 against hand-computed values", "[sharon2005][mass_distance]") {
+TEST_CASE("mass distance: eq. 2 against hand-computed values", "[objectives][mass_distance]") {
   const auto m = small_biped();
   const Eigen::VectorXd q0 = vec({0.0, 1.0, 0.0, 0.0, 0.0, 0.0, 0.0});
   CHECK(delta(m, q0, q0) == 0.0);
@@ -62,8 +62,8 @@ TEST_CASE("mass distance: eq. 2 against hand-computed values", "[sharon2005][mas
   CHECK(delta(m, q, q0) == Approx(1.0 * c4 * c4 + 0.5 * c4 * c4 + 0.5 * c8 * c8));
 }
 
-TEST_CASE("mass distance: eq. 3 integrates delta over time; falls pay for the time left",
-          "[sharon2005][mass_distance]") {
+TEST_CASE("mass distance: eq. 3 integrates delta over time, and falls pay for the time left",
+          "[objectives][mass_distance]") {
   const auto m = small_biped();
   const Eigen::VectorXd q0 = vec({0.0, 1.0, 0.0, 0.0, 0.0, 0.0, 0.0});
   mass_distance_options o;
@@ -107,7 +107,7 @@ TEST_CASE("mass distance: eq. 3 integrates delta over time; falls pay for the ti
   CHECK(od.fall_rate() == Approx(expect));
 }
 
-TEST_CASE("mass distance: the target moves with the keyframe motion", "[sharon2005][mass_distance]") {
+TEST_CASE("mass distance: the target moves with the keyframe motion", "[objectives][mass_distance]") {
   const auto m = small_biped();
   const auto walk = sharon_test::small_walk(m);
   const mass_distance<planar_root> obj(m, walk);
