@@ -23,7 +23,8 @@ template <gaitsynth::root_joint Root>
 void draw(const gaitsynth::model<Root>& m, const std::string& file, const std::string& svg,
           const std::string& title, double slope_deg = 0.0) {
   using namespace gaitsynth;
-  const auto motion = load_keyframes(m, std::string(GAITSYNTH_SOURCE_DIR) + "/data/sharon2005/" + file);
+  const auto motion =
+      load_keyframes(m, std::string(GAITSYNTH_SOURCE_DIR) + "/data/sharon2005/" + file);
   trajectory tr;
   // One frame per listed keyframe at its time, then the closing (mirrored) keyframe.
   for (const keyframe& k : motion.keyframes()) {
@@ -74,7 +75,8 @@ int main(int argc, char** argv) try {
   std::filesystem::path out = "out";
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
-    if (a == "--out" && i + 1 < argc) out = argv[++i];
+    if (a == "--out" && i + 1 < argc)
+      out = argv[++i];
     else {
       std::cerr << "usage: " << argv[0] << " [--out DIR]\n";
       return a == "--help" ? 0 : 1;
@@ -90,19 +92,27 @@ int main(int argc, char** argv) try {
     double slope;
   };
   const std::vector<item> items = {
-      {"normal_walk.keyframes.json", "fig5a_normal_walk.svg", "Fig. 5a: normal walk (7-link)", false, 0},
-      {"human16_walk.keyframes.json", "fig5c_human16_walk.svg", "Fig. 5c: walk of the 16-link human", true, 0},
-      {"high_knee.keyframes.json", "fig6a_high_knee.svg", "Fig. 6a: long double stance, high knee lift", false, 0},
-      {"backswing.keyframes.json", "fig6c_backswing.svg", "Fig. 6c: extra back-swing of the swing leg", false, 0},
-      {"uphill.keyframes.json", "fig7a_uphill.svg", "Fig. 7a: walk up a 10 degree slope", false, 10},
+      {"normal_walk.keyframes.json", "fig5a_normal_walk.svg", "Fig. 5a: normal walk (7-link)",
+       false, 0},
+      {"human16_walk.keyframes.json", "fig5c_human16_walk.svg",
+       "Fig. 5c: walk of the 16-link human", true, 0},
+      {"high_knee.keyframes.json", "fig6a_high_knee.svg",
+       "Fig. 6a: long double stance, high knee lift", false, 0},
+      {"backswing.keyframes.json", "fig6c_backswing.svg",
+       "Fig. 6c: extra back-swing of the swing leg", false, 0},
+      {"uphill.keyframes.json", "fig7a_uphill.svg", "Fig. 7a: walk up a 10 degree slope", false,
+       10},
   };
   for (const item& it : items) {
-    if (!std::filesystem::exists(std::string(GAITSYNTH_SOURCE_DIR) + "/data/sharon2005/" + it.file)) {
+    if (!std::filesystem::exists(std::string(GAITSYNTH_SOURCE_DIR) + "/data/sharon2005/" +
+                                 it.file)) {
       std::cerr << "skipping " << it.file << " (not there)\n";
       continue;
     }
-    if (it.human16) draw(h16, it.file, (out / it.svg).string(), it.title, it.slope);
-    else draw(h7, it.file, (out / it.svg).string(), it.title, it.slope);
+    if (it.human16)
+      draw(h16, it.file, (out / it.svg).string(), it.title, it.slope);
+    else
+      draw(h7, it.file, (out / it.svg).string(), it.title, it.slope);
   }
   return 0;
 } catch (const std::exception& e) {

@@ -49,7 +49,8 @@ TEST_CASE("nearest neighbor: initialization along the target motion", "[controll
   }
 }
 
-TEST_CASE("nearest neighbor: eq. 1 selection equals a brute-force weighted search", "[controllers][nn]") {
+TEST_CASE("nearest neighbor: eq. 1 selection equals a brute-force weighted search",
+          "[controllers][nn]") {
   const auto m = small_biped();
   std::mt19937 rng(7);
   std::uniform_real_distribution<double> U(-1.0, 1.0);
@@ -166,7 +167,8 @@ TEST_CASE("nearest neighbor: restricted activation order", "[controllers][nn]") 
   CHECK(s2.active == 0);
 }
 
-TEST_CASE("nearest neighbor: PD servos, torso servo on the stance hip, torque limit", "[controllers][nn]") {
+TEST_CASE("nearest neighbor: PD servos, torso servo on the stance hip, torque limit",
+          "[controllers][nn]") {
   const auto m = small_biped();
   nearest_neighbor_options o;
   o.default_kp = 500;

@@ -15,16 +15,26 @@ using namespace gaitsynth;
 namespace {
 
 // A small planar biped built here (independent of the library's characters): torso root with two
-// legs of thigh + shin; DOFs lhip, lknee, rhip, rknee (q = [x, z, pitch, lhip, lknee, rhip, rknee]).
+// legs of thigh + shin; DOFs lhip, lknee, rhip, rknee (q = [x, z, pitch, lhip, lknee, rhip,
+// rknee]).
 planar_model small_biped() {
   model_builder<planar_root> b("small_biped");
   const Eigen::Matrix3d I = Eigen::Vector3d(0.1, 0.1, 0.1).asDiagonal();
   b.add_body({.name = "torso", .mass = 10, .inertia = I});
   for (std::string s : {"l", "r"}) {
-    b.add_body({.name = s + "thigh", .parent = "torso", .mass = 2, .com = {0, 0, -0.2},
-                .inertia = I, .dofs = {{.name = s + "hip"}}});
-    b.add_body({.name = s + "shin", .parent = s + "thigh", .joint_offset = {0, 0, -0.4},
-                .mass = 1, .com = {0, 0, -0.2}, .inertia = I, .dofs = {{.name = s + "knee"}}});
+    b.add_body({.name = s + "thigh",
+                .parent = "torso",
+                .mass = 2,
+                .com = {0, 0, -0.2},
+                .inertia = I,
+                .dofs = {{.name = s + "hip"}}});
+    b.add_body({.name = s + "shin",
+                .parent = s + "thigh",
+                .joint_offset = {0, 0, -0.4},
+                .mass = 1,
+                .com = {0, 0, -0.2},
+                .inertia = I,
+                .dofs = {{.name = s + "knee"}}});
   }
   return b.build();
 }
@@ -93,7 +103,8 @@ TEST_CASE("keyframe motion mirrors odd steps and advances the root", "[motion][k
   CHECK(mo.cycle_keyframes().size() == 4);
 }
 
-TEST_CASE("keyframe velocity is the slope of the interpolation, and the initial state", "[motion][keyframes]") {
+TEST_CASE("keyframe velocity is the slope of the interpolation, and the initial state",
+          "[motion][keyframes]") {
   const auto m = small_biped();
   const auto mo = two_key_walk(m);
   Eigen::VectorXd v(m.nv()), qa(m.nq()), qb(m.nq());
@@ -131,9 +142,15 @@ TEST_CASE("mirror_configuration of a floating root flips y and the lateral quate
   model_builder<floating_root> b("tiny3d");
   const Eigen::Matrix3d I = Eigen::Vector3d(0.1, 0.1, 0.1).asDiagonal();
   b.add_body({.name = "pelvis", .mass = 10, .inertia = I});
-  b.add_body({.name = "lleg", .parent = "pelvis", .mass = 2, .inertia = I,
+  b.add_body({.name = "lleg",
+              .parent = "pelvis",
+              .mass = 2,
+              .inertia = I,
               .dofs = {{.name = "lhip_x", .axis = {1, 0, 0}}, {.name = "lhip_y"}}});
-  b.add_body({.name = "rleg", .parent = "pelvis", .mass = 2, .inertia = I,
+  b.add_body({.name = "rleg",
+              .parent = "pelvis",
+              .mass = 2,
+              .inertia = I,
               .dofs = {{.name = "rhip_x", .axis = {1, 0, 0}}, {.name = "rhip_y"}}});
   const auto m = b.build();
   Eigen::VectorXd q(m.nq()), out(m.nq()), back(m.nq());
@@ -174,7 +191,8 @@ std::string replace(std::string s, const std::string& from, const std::string& t
 }
 }  // namespace
 
-TEST_CASE("keyframes JSON: reads names, degrees, defaults and arrays", "[motion][keyframes][json]") {
+TEST_CASE("keyframes JSON: reads names, degrees, defaults and arrays",
+          "[motion][keyframes][json]") {
   const auto m = small_biped();
   const auto mo = parse_keyframes(m, good_json, "walk.json");
   REQUIRE(mo.num_keyframes() == 2);
@@ -191,12 +209,12 @@ TEST_CASE("keyframes JSON: reads names, degrees, defaults and arrays", "[motion]
   CHECK(mo.advance()[0] == 0.6);
   // Round trip through the writer.
   const auto back = parse_keyframes(m, keyframes_to_json(m, mo).dump(2), "roundtrip");
-  for (int k = 0; k < 2; ++k)
-    CHECK((back.keyframes()[k].q - mo.keyframes()[k].q).norm() < 1e-12);
+  for (int k = 0; k < 2; ++k) CHECK((back.keyframes()[k].q - mo.keyframes()[k].q).norm() < 1e-12);
   CHECK(back.advance()[0] == 0.6);
 }
 
-TEST_CASE("keyframes JSON: clear errors naming the value and its location", "[motion][keyframes][json]") {
+TEST_CASE("keyframes JSON: clear errors naming the value and its location",
+          "[motion][keyframes][json]") {
   const auto m = small_biped();
   const std::string g = good_json;
   auto err = [&](const std::string& text) {

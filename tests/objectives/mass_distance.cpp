@@ -107,7 +107,8 @@ TEST_CASE("mass distance: eq. 3 integrates delta over time, and falls pay for th
   CHECK(od.fall_rate() == Approx(expect));
 }
 
-TEST_CASE("mass distance: the target moves with the keyframe motion", "[objectives][mass_distance]") {
+TEST_CASE("mass distance: the target moves with the keyframe motion",
+          "[objectives][mass_distance]") {
   const auto m = small_biped();
   const auto walk = sharon_test::small_walk(m);
   const mass_distance<planar_root> obj(m, walk);

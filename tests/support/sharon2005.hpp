@@ -18,15 +18,30 @@ inline gaitsynth::planar_model small_biped() {
   using namespace gaitsynth;
   model_builder<planar_root> b("small_biped");
   const Eigen::Matrix3d I = Eigen::Vector3d(0.1, 0.1, 0.1).asDiagonal();
-  b.add_body({.name = "torso", .mass = 10, .com = {0, 0, 0.25}, .inertia = I, .length = 0.5,
+  b.add_body({.name = "torso",
+              .mass = 10,
+              .com = {0, 0, 0.25},
+              .inertia = I,
+              .length = 0.5,
               .segment_end = {0, 0, 0.5}});
   for (std::string s : {"l", "r"}) {
-    b.add_body({.name = s + "thigh", .parent = "torso", .mass = 2, .com = {0, 0, -0.2},
-                .inertia = I, .dofs = {{.name = s + "hip"}}, .length = 0.4,
+    b.add_body({.name = s + "thigh",
+                .parent = "torso",
+                .mass = 2,
+                .com = {0, 0, -0.2},
+                .inertia = I,
+                .dofs = {{.name = s + "hip"}},
+                .length = 0.4,
                 .segment_end = {0, 0, -0.4}});
-    b.add_body({.name = s + "shin", .parent = s + "thigh", .joint_offset = {0, 0, -0.4},
-                .mass = 1, .com = {0, 0, -0.2}, .inertia = I, .dofs = {{.name = s + "knee"}},
-                .length = 0.4, .segment_end = {0, 0, -0.4}});
+    b.add_body({.name = s + "shin",
+                .parent = s + "thigh",
+                .joint_offset = {0, 0, -0.4},
+                .mass = 1,
+                .com = {0, 0, -0.2},
+                .inertia = I,
+                .dofs = {{.name = s + "knee"}},
+                .length = 0.4,
+                .segment_end = {0, 0, -0.4}});
   }
   return b.build();
 }
@@ -59,8 +74,12 @@ struct sensor_fixture {
   gaitsynth::sensors<Root> s;
 
   explicit sensor_fixture(const gaitsynth::model<Root>& model)
-      : m(model), ws(gaitsynth::make_workspace(model)), q(model.nq()), v(model.nv()),
-        counts(model.num_bodies(), 0), active(model.contact_points.size(), 0) {
+      : m(model),
+        ws(gaitsynth::make_workspace(model)),
+        q(model.nq()),
+        v(model.nv()),
+        counts(model.num_bodies(), 0),
+        active(model.contact_points.size(), 0) {
     q = gaitsynth::neutral_configuration(model);
     v.setZero();
   }

@@ -1,7 +1,7 @@
 #pragma once
 /// \file nearest_neighbor_json.hpp
-/// Saving and loading nearest-neighbor controllers (controllers/nearest_neighbor.hpp) as JSON, so an
-/// optimized controller can be kept in the repository and re-simulated without its optimization.
+/// Saving and loading nearest-neighbor controllers (controllers/nearest_neighbor.hpp) as JSON, so
+/// an optimized controller can be kept in the repository and re-simulated without its optimization.
 /// Needs nlohmann::json (Debian: nlohmann-json3-dev).
 ///
 ///     {
@@ -42,8 +42,9 @@ inline const char* stance_name(stance_side s) {
   return s == stance_side::left ? "left" : (s == stance_side::right ? "right" : "none");
 }
 inline const char* command_kind_name(command_kind k) {
-  return k == command_kind::joint_torque ? "joint_torque"
-                                         : (k == command_kind::joint_target ? "joint_target" : "excitation");
+  return k == command_kind::joint_torque
+             ? "joint_torque"
+             : (k == command_kind::joint_target ? "joint_target" : "excitation");
 }
 }  // namespace detail
 
@@ -108,15 +109,15 @@ nlohmann::ordered_json nearest_neighbor_to_json(const model<Root>& m,
 /// Rebuilds a controller from JSON for model m. Throws std::invalid_argument (keyframes_error)
 /// naming the source, location and value.
 template <root_joint Root>
-nearest_neighbor_controller<Root> nearest_neighbor_from_json(const model<Root>& m,
-                                                             const nlohmann::json& j,
-                                                             const std::string& source = "<controller>") {
+nearest_neighbor_controller<Root> nearest_neighbor_from_json(
+    const model<Root>& m, const nlohmann::json& j, const std::string& source = "<controller>") {
   const detail::keyframe_reader r(source);
   if (!j.is_object()) r.fail("", "expected a JSON object");
   if (!j.contains("format") || j["format"] != "gaitsynth.nearest_neighbor/1")
     r.fail("format", "expected \"gaitsynth.nearest_neighbor/1\"");
   if (j.contains("model") && j["model"] != m.name)
-    r.fail("model", "file is for model " + j["model"].dump() + ", but the model is '" + m.name + "'");
+    r.fail("model",
+           "file is for model " + j["model"].dump() + ", but the model is '" + m.name + "'");
   if (!j.contains("options") || !j["options"].is_object()) r.fail("options", "missing object");
   const auto& jo = j["options"];
   nearest_neighbor_options o;
@@ -125,17 +126,20 @@ nearest_neighbor_controller<Root> nearest_neighbor_from_json(const model<Root>& 
   };
   auto integer = [&](const char* key, int& x) {
     if (!jo.contains(key)) return;
-    if (!jo[key].is_number_integer()) r.fail(std::string("options.") + key, "expected an integer, got " + jo[key].dump());
+    if (!jo[key].is_number_integer())
+      r.fail(std::string("options.") + key, "expected an integer, got " + jo[key].dump());
     x = jo[key].get<int>();
   };
   auto boolean = [&](const char* key, bool& x) {
     if (!jo.contains(key)) return;
-    if (!jo[key].is_boolean()) r.fail(std::string("options.") + key, "expected true/false, got " + jo[key].dump());
+    if (!jo[key].is_boolean())
+      r.fail(std::string("options.") + key, "expected true/false, got " + jo[key].dump());
     x = jo[key].get<bool>();
   };
   auto string = [&](const char* key, std::string& x) {
     if (!jo.contains(key)) return;
-    if (!jo[key].is_string()) r.fail(std::string("options.") + key, "expected a string, got " + jo[key].dump());
+    if (!jo[key].is_string())
+      r.fail(std::string("options.") + key, "expected a string, got " + jo[key].dump());
     x = jo[key].get<std::string>();
   };
   auto strings = [&](const char* key, std::vector<std::string>& x) {
@@ -144,7 +148,8 @@ nearest_neighbor_controller<Root> nearest_neighbor_from_json(const model<Root>& 
     if (!a.is_array()) r.fail(std::string("options.") + key, "expected an array of strings");
     x.clear();
     for (std::size_t i = 0; i < a.size(); ++i) {
-      if (!a[i].is_string()) r.fail(std::string("options.") + key + "[" + std::to_string(i) + "]", "expected a string");
+      if (!a[i].is_string())
+        r.fail(std::string("options.") + key + "[" + std::to_string(i) + "]", "expected a string");
       x.push_back(a[i].get<std::string>());
     }
   };
@@ -165,9 +170,13 @@ nearest_neighbor_controller<Root> nearest_neighbor_from_json(const model<Root>& 
   num("first_node_time", o.first_node_time);
   std::string output = "joint_torque";
   string("output", output);
-  if (output == "joint_torque") o.output = command_kind::joint_torque;
-  else if (output == "joint_target") o.output = command_kind::joint_target;
-  else r.fail("options.output", "expected \"joint_torque\" or \"joint_target\", got \"" + output + "\"");
+  if (output == "joint_torque")
+    o.output = command_kind::joint_torque;
+  else if (output == "joint_target")
+    o.output = command_kind::joint_target;
+  else
+    r.fail("options.output",
+           "expected \"joint_torque\" or \"joint_target\", got \"" + output + "\"");
   numbers("kp", o.kp);
   numbers("kd", o.kd);
   num("torque_limit", o.torque_limit);
@@ -187,7 +196,8 @@ nearest_neighbor_controller<Root> nearest_neighbor_from_json(const model<Root>& 
   const auto& jn = j["nodes"];
   const int nfree = o.symmetric ? o.num_nodes / 2 : o.num_nodes;
   if (static_cast<int>(jn.size()) < nfree)
-    r.fail("nodes", "expected at least " + std::to_string(nfree) + " nodes, got " + std::to_string(jn.size()));
+    r.fail("nodes", "expected at least " + std::to_string(nfree) + " nodes, got " +
+                        std::to_string(jn.size()));
   // Input names: the file's, or the default the controller would build.
   std::vector<std::string> input = o.input;
   if (input.empty()) {
@@ -199,9 +209,12 @@ nearest_neighbor_controller<Root> nearest_neighbor_from_json(const model<Root>& 
     const std::string where = "nodes[" + std::to_string(i) + "]";
     const auto& n = jn[i];
     if (!n.is_object()) r.fail(where, "expected an object");
-    if (n.contains("mirror_of")) r.fail(where, "the first " + std::to_string(nfree) + " nodes must be free (no mirror_of)");
-    if (!n.contains("location") || !n["location"].is_object()) r.fail(where + ".location", "missing object");
-    if (!n.contains("output") || !n["output"].is_object()) r.fail(where + ".output", "missing object");
+    if (n.contains("mirror_of"))
+      r.fail(where, "the first " + std::to_string(nfree) + " nodes must be free (no mirror_of)");
+    if (!n.contains("location") || !n["location"].is_object())
+      r.fail(where + ".location", "missing object");
+    if (!n.contains("output") || !n["output"].is_object())
+      r.fail(where + ".output", "missing object");
     nn_node& nd = nodes[i];
     nd.location.resize(static_cast<Eigen::Index>(input.size()));
     for (std::size_t k = 0; k < input.size(); ++k) {
@@ -219,13 +232,20 @@ nearest_neighbor_controller<Root> nearest_neighbor_from_json(const model<Root>& 
       nd.output[d] = r.number(n["output"][m.dofs[d].name], w);
     }
     for (auto it = n["output"].begin(); it != n["output"].end(); ++it)
-      if (m.find_dof(it.key()) < 0) r.fail(where + ".output." + it.key(), "unknown DOF name '" + it.key() + "'");
-    nd.torso_pitch = n.contains("torso_pitch") ? r.number(n["torso_pitch"], where + ".torso_pitch") : 0.0;
-    const std::string st = n.contains("stance") && n["stance"].is_string() ? n["stance"].get<std::string>() : "none";
-    if (st == "left") nd.stance = stance_side::left;
-    else if (st == "right") nd.stance = stance_side::right;
-    else if (st == "none") nd.stance = stance_side::none;
-    else r.fail(where + ".stance", "expected left, right or none, got \"" + st + "\"");
+      if (m.find_dof(it.key()) < 0)
+        r.fail(where + ".output." + it.key(), "unknown DOF name '" + it.key() + "'");
+    nd.torso_pitch =
+        n.contains("torso_pitch") ? r.number(n["torso_pitch"], where + ".torso_pitch") : 0.0;
+    const std::string st =
+        n.contains("stance") && n["stance"].is_string() ? n["stance"].get<std::string>() : "none";
+    if (st == "left")
+      nd.stance = stance_side::left;
+    else if (st == "right")
+      nd.stance = stance_side::right;
+    else if (st == "none")
+      nd.stance = stance_side::none;
+    else
+      r.fail(where + ".stance", "expected left, right or none, got \"" + st + "\"");
   }
   try {
     return nearest_neighbor_controller<Root>(m, o, std::move(nodes));

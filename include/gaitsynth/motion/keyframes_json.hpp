@@ -22,8 +22,8 @@
 ///
 /// Pose names are the model's joint DOF names plus the root coordinates: root_x, root_z, root_pitch
 /// (planar root; root_pitch is an angle) or root_x, root_y, root_z, root_qw, root_qx, root_qy,
-/// root_qz (floating root; the quaternion is unitless and defaults to identity). Translations are in
-/// metres whatever the units. Every error is a `keyframes_error` (a std::invalid_argument) whose
+/// root_qz (floating root; the quaternion is unitless and defaults to identity). Translations are
+/// in metres whatever the units. Every error is a `keyframes_error` (a std::invalid_argument) whose
 /// message starts with the source (file name) and the JSON location, e.g.
 ///     walk.json: keyframes[2].pose.lkne: unknown DOF name 'lkne' (known: root_x, root_z, ...)
 /// (comments as above are not JSON; real files have none).
@@ -39,12 +39,13 @@
 #include <string>
 #include <vector>
 
-#include "gaitsynth/motion/keyframes.hpp"
 #include "gaitsynth/error.hpp"
+#include "gaitsynth/motion/keyframes.hpp"
 
 namespace gaitsynth {
 
-/// Malformed or inconsistent keyframe file. The message names the source, the location and the value.
+/// Malformed or inconsistent keyframe file. The message names the source, the location and the
+/// value.
 class keyframes_error : public std::invalid_argument {
  public:
   using std::invalid_argument::invalid_argument;
@@ -65,11 +66,14 @@ std::vector<std::string> keyframe_coordinate_names(const model<Root>& m) {
   return names;
 }
 
-/// True when coordinate i is an angle (converted by "units"); translations and quaternion parts are not.
+/// True when coordinate i is an angle (converted by "units"); translations and quaternion parts are
+/// not.
 template <root_joint Root>
 bool keyframe_coordinate_is_angle(int i) {
-  if constexpr (Root::nq == 3) return i >= 2;
-  else return i >= Root::nq;
+  if constexpr (Root::nq == 3)
+    return i >= 2;
+  else
+    return i >= Root::nq;
 }
 
 inline std::string join_names(const std::vector<std::string>& n) {
@@ -124,14 +128,14 @@ keyframe_motion<Root> keyframes_from_json(const model<Root>& m, const nlohmann::
   if (!j.is_object()) r.fail("", "expected a JSON object, got " + std::string(j.type_name()));
 
   static const std::vector<std::string> known_keys = {
-      "format", "model", "description", "units", "symmetric", "stance",
-      "end_time", "advance", "defaults", "keyframes", "figure", "notes"};
+      "format",   "model",   "description", "units",     "symmetric", "stance",
+      "end_time", "advance", "defaults",    "keyframes", "figure",    "notes"};
   for (auto it = j.begin(); it != j.end(); ++it) {
     bool ok = false;
     for (const auto& k : known_keys) ok = ok || it.key() == k;
     if (!ok)
-      r.fail(it.key(), "unknown key '" + it.key() + "' (known: " + detail::join_names(known_keys) +
-                           ")");
+      r.fail(it.key(),
+             "unknown key '" + it.key() + "' (known: " + detail::join_names(known_keys) + ")");
   }
   if (j.contains("format")) {
     const auto& f = j["format"];
@@ -149,9 +153,12 @@ keyframe_motion<Root> keyframes_from_json(const model<Root>& m, const nlohmann::
   if (j.contains("units")) {
     const auto& u = j["units"];
     const std::string us = u.is_string() ? u.get<std::string>() : std::string();
-    if (us == "degrees") angle_scale = std::numbers::pi / 180.0;
-    else if (us == "radians") angle_scale = 1.0;
-    else r.fail("units", "expected \"degrees\" or \"radians\", got " + detail::json_short(u));
+    if (us == "degrees")
+      angle_scale = std::numbers::pi / 180.0;
+    else if (us == "radians")
+      angle_scale = 1.0;
+    else
+      r.fail("units", "expected \"degrees\" or \"radians\", got " + detail::json_short(u));
   }
   bool symmetric = false;
   if (j.contains("symmetric")) {
@@ -163,10 +170,14 @@ keyframe_motion<Root> keyframes_from_json(const model<Root>& m, const nlohmann::
   if (j.contains("stance")) {
     const auto& s = j["stance"];
     const std::string ss = s.is_string() ? s.get<std::string>() : std::string();
-    if (ss == "left") stance = stance_side::left;
-    else if (ss == "right") stance = stance_side::right;
-    else if (ss == "none") stance = stance_side::none;
-    else r.fail("stance", "expected \"left\", \"right\" or \"none\", got " + detail::json_short(s));
+    if (ss == "left")
+      stance = stance_side::left;
+    else if (ss == "right")
+      stance = stance_side::right;
+    else if (ss == "none")
+      stance = stance_side::none;
+    else
+      r.fail("stance", "expected \"left\", \"right\" or \"none\", got " + detail::json_short(s));
   }
 
   const std::vector<std::string> names = detail::keyframe_coordinate_names(m);
@@ -181,7 +192,8 @@ keyframe_motion<Root> keyframes_from_json(const model<Root>& m, const nlohmann::
     return detail::keyframe_coordinate_is_angle<Root>(i) ? x * angle_scale : x;
   };
 
-  // Defaults for coordinates a keyframe leaves out. A floating root's quaternion defaults to identity.
+  // Defaults for coordinates a keyframe leaves out. A floating root's quaternion defaults to
+  // identity.
   std::vector<double> defaults(nq, std::numeric_limits<double>::quiet_NaN());
   if constexpr (Root::nq == 7) defaults[3] = 1.0, defaults[4] = defaults[5] = defaults[6] = 0.0;
   if (j.contains("defaults")) {
@@ -194,7 +206,8 @@ keyframe_motion<Root> keyframes_from_json(const model<Root>& m, const nlohmann::
     }
   }
 
-  if (!j.contains("end_time")) r.fail("end_time", "missing (time at which the listed keyframes wrap around, s)");
+  if (!j.contains("end_time"))
+    r.fail("end_time", "missing (time at which the listed keyframes wrap around, s)");
   const double end_time = r.number(j["end_time"], "end_time");
 
   Eigen::VectorXd advance = Eigen::VectorXd::Zero(Root::nq);
@@ -204,7 +217,8 @@ keyframe_motion<Root> keyframes_from_json(const model<Root>& m, const nlohmann::
     for (auto it = a.begin(); it != a.end(); ++it) {
       const std::string where = "advance." + it.key();
       const int i = index_of(it.key(), where);
-      if (i >= Root::nq || detail::keyframe_coordinate_is_angle<Root>(i) || (Root::nq == 7 && i >= 3))
+      if (i >= Root::nq || detail::keyframe_coordinate_is_angle<Root>(i) ||
+          (Root::nq == 7 && i >= 3))
         r.fail(where, "only the root's translation can advance, not '" + it.key() + "'");
       advance[i] = r.number(it.value(), where);
     }
@@ -226,7 +240,8 @@ keyframe_motion<Root> keyframes_from_json(const model<Root>& m, const nlohmann::
     keyframe f;
     f.time = r.number(kf["time"], where + ".time");
     if (k == 0 && f.time != 0.0)
-      r.fail(where + ".time", "the first keyframe must be at time 0, got " + detail::json_short(kf["time"]));
+      r.fail(where + ".time",
+             "the first keyframe must be at time 0, got " + detail::json_short(kf["time"]));
     if (k > 0 && !(f.time > frames.back().time)) {
       r.fail(where + ".time", "times must increase: " + detail::shortest(f.time) +
                                   " s is not after keyframes[" + std::to_string(k - 1) +
@@ -237,8 +252,8 @@ keyframe_motion<Root> keyframes_from_json(const model<Root>& m, const nlohmann::
     f.q.resize(nq);
     if (p.is_array()) {
       if (static_cast<int>(p.size()) != nq)
-        r.fail(where + ".pose", "wrong DOF count: model '" + m.name + "' has nq = " +
-                                    std::to_string(nq) + " coordinates (" +
+        r.fail(where + ".pose", "wrong DOF count: model '" + m.name +
+                                    "' has nq = " + std::to_string(nq) + " coordinates (" +
                                     detail::join_names(names) + "), got " +
                                     std::to_string(p.size()));
       for (int i = 0; i < nq; ++i)
@@ -254,7 +269,8 @@ keyframe_motion<Root> keyframes_from_json(const model<Root>& m, const nlohmann::
       for (int i = 0; i < nq; ++i) {
         if (set[i]) continue;
         if (std::isnan(defaults[i]))
-          r.fail(where + ".pose", "missing DOF '" + names[i] + "' (and no \"defaults\" entry for it)");
+          r.fail(where + ".pose",
+                 "missing DOF '" + names[i] + "' (and no \"defaults\" entry for it)");
         f.q[i] = defaults[i];
       }
     } else {
@@ -302,7 +318,7 @@ keyframe_motion<Root> load_keyframes(const model<Root>& m, const std::filesystem
 /// keyframes_from_json.
 template <root_joint Root>
 nlohmann::ordered_json keyframes_to_json(const model<Root>& m, const keyframe_motion<Root>& motion,
-                                 const std::string& description = "") {
+                                         const std::string& description = "") {
   nlohmann::ordered_json j;
   j["format"] = "gaitsynth.keyframes/1";
   j["model"] = m.name;
@@ -322,8 +338,9 @@ nlohmann::ordered_json keyframes_to_json(const model<Root>& m, const keyframe_mo
   for (const auto& f : motion.keyframes()) {
     nlohmann::ordered_json pose = nlohmann::ordered_json::object();
     for (int i = 0; i < m.nq(); ++i)
-      pose[names[i]] = detail::keyframe_coordinate_is_angle<Root>(i) ? f.q[i] * 180.0 / std::numbers::pi
-                                                                  : f.q[i];
+      pose[names[i]] = detail::keyframe_coordinate_is_angle<Root>(i)
+                           ? f.q[i] * 180.0 / std::numbers::pi
+                           : f.q[i];
     nlohmann::ordered_json kf;
     kf["time"] = f.time;
     kf["pose"] = pose;
