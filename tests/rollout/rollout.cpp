@@ -17,6 +17,7 @@
 #include "gaitsynth/dynamics/center_of_mass.hpp"
 #include "gaitsynth/dynamics/joint_limits.hpp"
 #include "gaitsynth/dynamics/kinematics.hpp"
+#include "gaitsynth/integrators/odeint.hpp"
 #include "gaitsynth/integrators/semi_implicit_euler.hpp"
 #include "gaitsynth/model/model_builder.hpp"
 #include "gaitsynth/objectives/distance.hpp"
@@ -303,16 +304,26 @@ TEST_CASE("a diverging simulation is a failed rollout with cost +infinity, not a
   const Eigen::VectorXd kp = Eigen::VectorXd::Constant(m.num_joint_dofs(), 1e7);
   Eigen::VectorXd target = standing_pose(m);
   target.setConstant(0.5);
-  rollout_result r;
-  REQUIRE_NOTHROW(r = rollout(m, pd_actuator(kp, 0.1 * kp), pose_hold(m), distance_objective(),
-                              flat_terrain(), semi_implicit_euler(), target, opt, scr));
-  CHECK(r.reason == stop_reason::non_finite);
-  CHECK(r.diverged());
-  CHECK(r.failed());
-  CHECK(r.cost == std::numeric_limits<double>::infinity());
-  CHECK(std::isnan(r.objective_value));  // finish() was not called
-  CHECK(r.time < 1.0);
-  CHECK(r.com_final.allFinite());
+  auto check = [&](auto integ) {
+    rollout_result r;
+    REQUIRE_NOTHROW(r = rollout(m, pd_actuator(kp, 0.1 * kp), pose_hold(m), distance_objective(),
+                                flat_terrain(), integ, target, opt, scr));
+    CHECK(r.reason == stop_reason::non_finite);
+    CHECK(r.diverged());
+    CHECK(r.failed());
+    CHECK(r.cost == std::numeric_limits<double>::infinity());
+    CHECK(std::isnan(r.objective_value));  // finish() was not called
+    CHECK(r.time < 1.0);
+    CHECK(r.com_final.allFinite());
+  };
+  SECTION("semi-implicit Euler") {
+    check(semi_implicit_euler());
+  }
+  // RK4 renormalizes the root quaternion after each step; a diverged quaternion used to make
+  // that throw instead of ending the rollout as failed.
+  SECTION("RK4") {
+    check(odeint_rk4());
+  }
 }
 
 TEST_CASE("the controller runs at its own period", "[rollout][controller][period]") {

@@ -106,7 +106,9 @@ struct odeint_rk4 {
     stepper_.do_step(std::ref(rhs), x_, s.t, dt);
     s.q = x_.head(nq);
     s.v = x_.tail(nv);
-    normalize_configuration(m, s.q);
+    // A diverged step stays as it is, for the rollout to report as a failed rollout
+    // (normalizing a non-finite quaternion throws).
+    if (s.q.allFinite()) normalize_configuration(m, s.q);
     s.t += dt;
   }
 
@@ -139,7 +141,9 @@ struct odeint_rk4 {
     s.q = xz_.head(nq);
     s.v = xz_.segment(nq, nv);
     z = xz_.tail(nz);
-    normalize_configuration(m, s.q);
+    // A diverged step stays as it is, for the rollout to report as a failed rollout
+    // (normalizing a non-finite quaternion throws).
+    if (s.q.allFinite()) normalize_configuration(m, s.q);
     s.t += dt;
   }
 
