@@ -2,8 +2,10 @@
 /// \file gaitsynth.hpp
 /// Everything in gaitsynth. Convenient for examples and quick experiments; a program that cares
 /// about compile time includes only the headers it uses (each header includes what it needs).
-/// The nlohmann::json readers and writers (motion/keyframes_json.hpp,
-/// controllers/nearest_neighbor_json.hpp) are included only when <nlohmann/json.hpp> is available.
+/// The headers that use nlohmann::json (motion/keyframes_json.hpp,
+/// controllers/nearest_neighbor_json.hpp, viz/html_player.hpp, which writes the player's data,
+/// and io/viewer_outputs.hpp, which writes the player) are included only when
+/// <nlohmann/json.hpp> is available.
 /// Architecture: docs/architecture.md.
 
 #include "gaitsynth/dynamics.hpp"
@@ -102,17 +104,17 @@
 #include "gaitsynth/io/mjcf.hpp"
 #include "gaitsynth/io/mjcf_replay.hpp"
 #include "gaitsynth/io/trajectory_csv.hpp"
-#include "gaitsynth/io/viewer_outputs.hpp"
 
 #include "gaitsynth/viz/convergence_plot_svg.hpp"
 #include "gaitsynth/viz/filmstrip_svg.hpp"
 #include "gaitsynth/viz/gait_cycles.hpp"
 #include "gaitsynth/viz/gait_plot_svg.hpp"
-#include "gaitsynth/viz/html_player.hpp"
 #include "gaitsynth/viz/scene.hpp"
 #include "gaitsynth/viz/svg.hpp"
 
 #if __has_include(<nlohmann/json.hpp>)
 #include "gaitsynth/controllers/nearest_neighbor_json.hpp"
+#include "gaitsynth/io/viewer_outputs.hpp"
+#include "gaitsynth/viz/html_player.hpp"
 #include "gaitsynth/motion/keyframes_json.hpp"
 #endif
