@@ -10,7 +10,8 @@
 ///   mjcf_replay     MJCF model with one keyframe per frame (io/mjcf_replay.hpp)
 ///
 /// A file whose name is empty is not written. The examples fill the names from their --html,
-/// --filmstrip, ... flags (examples/viewer_flags.hpp, docs/viewer.md):
+/// --filmstrip, ... flags (examples/viewer_flags.hpp, docs/viewer.md). Needs nlohmann::json (the
+/// HTML player writes its data with it).
 ///
 ///     gaitsynth::viz_outputs out;
 ///     out.html = "walk.html";
