@@ -1,6 +1,6 @@
 #pragma once
 /// \file keyframes_json.hpp
-/// Reading and writing cyclic keyframe target motions (controllers/keyframes.hpp) as JSON, a format
+/// Reading and writing cyclic keyframe target motions (motion/keyframes.hpp) as JSON, a format
 /// meant to be written by hand. Needs nlohmann::json (Debian: nlohmann-json3-dev).
 ///
 /// Example (a symmetric walk: one step listed, the other step is its mirror image):
