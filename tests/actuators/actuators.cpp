@@ -107,7 +107,7 @@ TEST_CASE("pd_actuator with feed-forward adds the second half of the command bef
   CHECK(tau[2] == Approx(10 * -0.3 - 2 - 4));  // -9
 }
 
-TEST_CASE("torque_actuator passes the command through, clamped; NaN stays NaN",
+TEST_CASE("torque_actuator passes the command through, clamped, and NaN stays NaN",
           "[actuators][torque]") {
   const auto m = three_joint_chain();
   const torque_actuator ta;

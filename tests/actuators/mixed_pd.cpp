@@ -81,7 +81,7 @@ TEST_CASE("mixed_pd_actuator: the command is [target | kp | kd | torque] per joi
   CHECK(c.torque() == cmd.segment(9, 3));
 }
 
-TEST_CASE("mixed_pd_actuator: torque DOFs pass through, clamped; NaN stays NaN",
+TEST_CASE("mixed_pd_actuator: torque DOFs pass through, clamped, and NaN stays NaN",
           "[actuators][mixed]") {
   const auto m = three_joint_chain();
   const mixed_pd_actuator act;

@@ -344,7 +344,7 @@ TEST_CASE("forward_kinematics(q, v) then gravity_forces keeps the velocity reade
         Eigen::VectorXd(nonlinear_effects(m, ref, p.q, p.v)));
 }
 
-TEST_CASE("a new configuration drops the cached velocities; a new state replaces them",
+TEST_CASE("a new configuration drops the cached velocities, a new state replaces them",
           "[dynamics][mixing]") {
   std::mt19937 rng(104);
   {

@@ -90,7 +90,7 @@ TEST_CASE("an observer sees every step in order and the stop state, and changes 
   CHECK(log.com_x.back() != log.com_x.front());
 }
 
-TEST_CASE("the trajectory recorder is an observer; options.record is its shorthand",
+TEST_CASE("the trajectory recorder is an observer, options.record is its shorthand",
           "[rollout][observer][recorder]") {
   const planar_model m = sharon2005_human7();
   rollout_options o = options_for(m);
