@@ -18,7 +18,10 @@
 #include "gaitsynth/motion/keyframes_json.hpp"
 #include "gaitsynth/objectives/distance.hpp"
 #include "gaitsynth/objectives/mass_distance.hpp"
+#include "gaitsynth/optimizers/cmaes.hpp"
 #include "gaitsynth/optimizers/evaluators.hpp"
+#include "gaitsynth/optimizers/minimize.hpp"
+#include "gaitsynth/optimizers/sds.hpp"
 #include "gaitsynth/rollout/problem.hpp"
 #include "gaitsynth/rollout/problem_cost.hpp"
 #include "gaitsynth/rollout/problem_with_variants.hpp"
@@ -181,5 +184,43 @@ TEST_CASE("problem costs on worker contexts do not depend on the thread count",
       INFO(threads << " threads, batch " << rep);
       CHECK(out == ref);
     }
+  }
+}
+
+TEST_CASE("CMA-ES and SDS minimize a problem through worker contexts, on any thread count",
+          "[rollout][problem][optimizers]") {
+  const planar_model m = sharon2005_human7();
+  const auto prob = normal_walk_problem(m, m);
+  const Eigen::VectorXd x0 = prob.initial_parameters();
+  const std::vector<std::string> names = prob.parameter_names();
+  parameter_space space;
+  for (Eigen::Index i = 0; i < x0.size(); ++i)
+    space.add({names[static_cast<std::size_t>(i)], x0[i] - 1.0, x0[i] + 1.0, x0[i], 1.0});
+  auto run = [&](unsigned threads, bool use_sds) {
+    thread_pool_evaluator pool(threads);
+    problem_contexts ctx(prob, pool.thread_count());
+    problem_cost f(prob, 0.2, ctx);
+    if (use_sds) {
+      sds_options so;
+      so.x0 = x0;
+      so.stop.max_evaluations = 40;
+      sds opt(space, so);
+      return minimize(opt, f, pool);
+    }
+    cmaes_options co;
+    co.sigma0 = 0.02;
+    co.seed = 5;
+    co.stop.max_iterations = 2;
+    cmaes opt(space, co);
+    return minimize(opt, f, pool);
+  };
+  for (bool use_sds : {false, true}) {
+    INFO((use_sds ? "SDS" : "CMA-ES"));
+    const optimization_result one = run(1, use_sds), two = run(2, use_sds);
+    CHECK(one.x == two.x);
+    CHECK(one.value == two.value);
+    CHECK(one.evaluations == two.evaluations);
+    CHECK(std::isfinite(one.value));
+    CHECK(prob.cost(one.x, 0.2) == one.value);  // a fresh context gives the logged value
   }
 }
