@@ -145,31 +145,15 @@ struct rollout_problem {
   requires(!std::is_convertible_v<Observer, trajectory*>) rollout_result
       evaluate(const Eigen::VectorXd& x, double horizon, context_type& ctx, Observer&& observer)
   const {
-    check_parameter_vector(x);
-    rollout_options& o = ctx.options;
-    o.initial_state = options.initial_state;
-    o.duration = horizon;
-    o.record = nullptr;
-    return rollout(character, actuator, ctx.controller, objective, ground, ctx.integrator,
-                   std::span<const double>(x.data(), static_cast<std::size_t>(x.size())), o,
-                   ctx.scratch, ctx.states, std::forward<Observer>(observer));
+    return run_from(options.initial_state, x, horizon, ctx, nullptr, 1,
+                    std::forward<Observer>(observer));
   }
 
   /// One rollout from start state s (its t is the target motion's time, for tracking costs).
   rollout_result evaluate_from(const sim_state& s, const Eigen::VectorXd& x, double horizon,
                                context_type& ctx, trajectory* record = nullptr,
                                int record_every = 1) const {
-    check_parameter_vector(x);
-    rollout_options& o = ctx.options;
-    o.initial_state.t = s.t;  // same sizes after the first call: no allocation
-    o.initial_state.q = s.q;
-    o.initial_state.v = s.v;
-    o.duration = horizon;
-    o.record = record;
-    o.record_every = record_every;
-    return rollout(character, actuator, ctx.controller, objective, ground, ctx.integrator,
-                   std::span<const double>(x.data(), static_cast<std::size_t>(x.size())), o,
-                   ctx.scratch, ctx.states);
+    return run_from(s, x, horizon, ctx, record, record_every, null_observer{});
   }
   rollout_result evaluate_from(const sim_state& s, const Eigen::VectorXd& x, double horizon,
                                trajectory* record = nullptr, int record_every = 1) const {
@@ -188,6 +172,25 @@ struct rollout_problem {
   double cost(const Eigen::VectorXd& x, double horizon) const {
     auto ctx = make_context();
     return cost(x, horizon, ctx);
+  }
+
+ private:
+  /// The one rollout every evaluation runs: start s, horizon, recorder and observer on ctx.
+  template <class Observer>
+  rollout_result run_from(const sim_state& s, const Eigen::VectorXd& x, double horizon,
+                          context_type& ctx, trajectory* record, int record_every,
+                          Observer&& observer) const {
+    check_parameter_vector(x);
+    rollout_options& o = ctx.options;
+    o.initial_state.t = s.t;  // same sizes after the first call: no allocation
+    o.initial_state.q = s.q;
+    o.initial_state.v = s.v;
+    o.duration = horizon;
+    o.record = record;
+    o.record_every = record_every;
+    return rollout(character, actuator, ctx.controller, objective, ground, ctx.integrator,
+                   std::span<const double>(x.data(), static_cast<std::size_t>(x.size())), o,
+                   ctx.scratch, ctx.states, std::forward<Observer>(observer));
   }
 };
 
