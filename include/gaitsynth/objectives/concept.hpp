@@ -65,6 +65,9 @@ struct step_view {
   bool toe_top_contact = false;                    ///< the top of some toe touches (a stumble)
   vec3 com = vec3::Zero();                         ///< world, m
   vec3 com_velocity = vec3::Zero();                ///< world, m/s
+  /// The controller's discrete state over [t, t + dt) (its discrete_state(): the FSM phase of
+  /// Wang et al. 2009 Fig. 2, which E_land and E_sym read), -1 if it has none.
+  int controller_phase = -1;
   const gaitsynth::workspace<Root>* workspace_ptr =
       nullptr;                                  ///< kinematics of (q, v) at t (read only)
   const contact_state* contacts_ptr = nullptr;  ///< contact evaluation at t (read only)

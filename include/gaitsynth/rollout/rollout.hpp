@@ -26,7 +26,7 @@
 ///   5. the actuator maps the command to joint torques (optionally reading the workspace);
 ///      passive joint-limit torques are added;
 ///   6. the objective accumulates this step (its view: state at t, torques and contact forces held
-///      over [t, t + dt)); the observers observe it (the recorder stores a frame if due); stop if
+///      over [t, t + dt), the controller's phase after this step's command); the observers observe it (the recorder stores a frame if due); stop if
 ///      the objective is done;
 ///   7. the integrator advances (q, v) with accelerations from ABA (torques and external wrenches
 ///      held constant over the step: zero-order hold, also for the stages of RK4). An actuator with
@@ -457,6 +457,8 @@ rollout_result rollout_impl(const model<Root>& m, const Actuator& act, C& ctrl,
     view.com = com;
     view.com_velocity = com_v;
     view.toe_top_contact = scr.contacts.any_toe_top_touching;
+    if constexpr (controller_with_discrete_state<C>)
+      view.controller_phase = static_cast<int>(ctrl.discrete_state(std::as_const(ctrl_state)));
     obj.accumulate(acc, static_cast<const step_view_with<Root, actuator_state>&>(view));
     if constexpr (user_observes)
       obs.observe(std::as_const(view));

@@ -1,0 +1,55 @@
+#pragma once
+/// \file world_angles.hpp
+/// World-frame orientation angles of a body, Wang et al. 2009 Sec. 3: "The world frame orientation
+/// of a body part is defined by measuring angles of their up and forward vectors projected in the
+/// coronal, sagittal, and transverse planes." SIMBICON-style controllers servo these angles (the
+/// torso, the swing thigh, the feet) and E_head penalizes the head's.
+///
+/// The planes belong to a heading frame: the world rotated by `heading` (rad) about +z, with x
+/// forward, y left, z up (Wang et al. walk along +x: heading 0). With u = R e_z (up) and f = R e_x
+/// (forward) expressed in that frame:
+///   coronal    (about x): theta_cor   = atan2(-u_y, u_z)   (R_x(a) e_z = (0, -sin a, cos a))
+///   sagittal   (about y): theta_sag   = atan2( u_x, u_z)   (R_y(a) e_z = (sin a, 0, cos a))
+///   transverse (about z): theta_trans = atan2( f_y, f_x)   (R_z(a) e_x = (cos a, sin a, 0))
+/// so each is the right-hand angle about its axis and a rotation about one axis alone reads back
+/// exactly (|a| < pi/2 for the first two). Signs match the joints' (docs/models.md): a thigh
+/// swung forward has a negative sagittal angle, a foot with its toes down a positive one.
+#include <cmath>
+
+#include "gaitsynth/spatial/types.hpp"
+
+namespace gaitsynth {
+
+/// Coronal, sagittal and transverse angles, rad (x, y, z of the heading frame).
+struct world_angles {
+  double coronal = 0.0;
+  double sagittal = 0.0;
+  double transverse = 0.0;
+
+  double operator[](int axis) const {
+    return axis == 0 ? coronal : axis == 1 ? sagittal : transverse;
+  }
+  /// Euclidean norm of the three (Wang et al. 2009 eq. 11: ||Theta_t||).
+  double norm() const {
+    return std::sqrt(coronal * coronal + sagittal * sagittal + transverse * transverse);
+  }
+};
+
+/// A world vector in the heading frame (rotated by -heading about z).
+inline vec3 to_heading_frame(const vec3& w, double heading) {
+  if (heading == 0.0) return w;
+  const double c = std::cos(heading), s = std::sin(heading);
+  return {c * w.x() + s * w.y(), -s * w.x() + c * w.y(), w.z()};
+}
+
+/// The angles of the body whose world rotation is R (R_world_body), in the heading frame.
+inline world_angles body_world_angles(const mat3& R, double heading = 0.0) {
+  const vec3 up = to_heading_frame(R.col(2), heading);
+  const vec3 fwd = to_heading_frame(R.col(0), heading);
+  return {std::atan2(-up.y(), up.z()), std::atan2(up.x(), up.z()), std::atan2(fwd.y(), fwd.x())};
+}
+
+/// The heading of a body: the transverse angle of its forward vector in the world (rad, 0 = +x).
+inline double body_heading(const mat3& R) { return std::atan2(R(1, 0), R(0, 0)); }
+
+}  // namespace gaitsynth
