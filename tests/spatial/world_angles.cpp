@@ -1,8 +1,8 @@
 // World-frame angles of Wang et al. 2009 Sec. 3 (spatial/world_angles.hpp): analytic rotations
 // about one axis read back exactly, the heading frame removes a yaw, and the signs match the
 // joints' (a forward-swung thigh is negative, toes-down is positive).
-#include <catch2/catch.hpp>
 #include <Eigen/Geometry>
+#include <catch2/catch.hpp>
 #include <numbers>
 
 #include "gaitsynth/spatial/world_angles.hpp"
@@ -15,8 +15,7 @@ mat3 rot(int axis, double a) {
 }
 }  // namespace
 
-TEST_CASE("world angles: a rotation about one axis reads back as that axis's angle",
-          "[spatial]") {
+TEST_CASE("world angles: a rotation about one axis reads back as that axis's angle", "[spatial]") {
   for (const double a : {-1.2, -0.3, 0.0, 0.05, 0.7, 1.4}) {
     for (int axis = 0; axis < 3; ++axis) {
       const world_angles w = body_world_angles(rot(axis, a));

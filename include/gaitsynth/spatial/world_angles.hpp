@@ -50,6 +50,8 @@ inline world_angles body_world_angles(const mat3& R, double heading = 0.0) {
 }
 
 /// The heading of a body: the transverse angle of its forward vector in the world (rad, 0 = +x).
-inline double body_heading(const mat3& R) { return std::atan2(R(1, 0), R(0, 0)); }
+inline double body_heading(const mat3& R) {
+  return std::atan2(R(1, 0), R(0, 0));
+}
 
 }  // namespace gaitsynth
