@@ -13,6 +13,7 @@
 
 #include "gaitsynth/spatial/spatial.hpp"
 #include "gaitsynth/spatial/types.hpp"
+#include "gaitsynth/spatial/world_angles.hpp"
 
 #include "gaitsynth/model/fingerprint.hpp"
 #include "gaitsynth/model/model.hpp"
@@ -54,6 +55,11 @@
 #include "gaitsynth/motion/keyframes.hpp"
 
 #include "gaitsynth/controllers/concept.hpp"
+#include "gaitsynth/controllers/fsm/biped_layout.hpp"
+#include "gaitsynth/controllers/fsm/wang2009_controller.hpp"
+#include "gaitsynth/controllers/fsm/wang2009_parameters.hpp"
+#include "gaitsynth/controllers/fsm/wang2009_table2.hpp"
+#include "gaitsynth/controllers/fsm/world_servo.hpp"
 #include "gaitsynth/controllers/nearest_neighbor.hpp"
 #include "gaitsynth/controllers/pose_hold.hpp"
 #include "gaitsynth/controllers/sensor_history.hpp"
@@ -62,6 +68,7 @@
 #include "gaitsynth/objectives/concept.hpp"
 #include "gaitsynth/objectives/distance.hpp"
 #include "gaitsynth/objectives/mass_distance.hpp"
+#include "gaitsynth/objectives/wang2009/wang2009_objective.hpp"
 #include "gaitsynth/objectives/weighted_sum.hpp"
 
 #include "gaitsynth/rollout/observer.hpp"
