@@ -1,9 +1,12 @@
 // The 3D humanoid of Wang et al. 2009 (models/wang2009.hpp).
 #include "gaitsynth/models/wang2009.hpp"
 
+#include <algorithm>
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <limits>
+#include <string>
+#include <vector>
 
 #include "models/model_checks.hpp"
 
@@ -55,12 +58,14 @@ TEST_CASE("wang2009_humanoid mass, geometry and contacts", "[models][wang2009]")
   const floating_model m = wang2009_humanoid();
   CHECK(m.total_mass() == Approx(70.0).epsilon(1e-12));
   CHECK(standing_height(m) == Approx(1.65).epsilon(1e-12));
-  // Feet flat: all sole and toe points on one plane at q = 0; the toe-top points above it.
+  // Feet flat: all sole and toe points on one plane at q = 0; the toe-top points above it (the
+  // body points, role other, are checked in "every body of wang2009_humanoid has contact points").
   const auto o = neutral_body_origins(m);
   const double ground = neutral_lowest_contact(m);
   int soles = 0, toes = 0, tops = 0;
   for (const contact_point& c : m.contact_points) {
     const double z = o[c.body].z() + c.position.z();
+    if (c.role == contact_point::kind::other) continue;
     if (c.role == contact_point::kind::toe_top) {
       CHECK(z > ground + 0.01);
       ++tops;
@@ -83,6 +88,8 @@ TEST_CASE("wang2009_humanoid mass, geometry and contacts", "[models][wang2009]")
     REQUIRE(foot.shapes.size() == 1);
     const shape& box = foot.shapes[0];
     CHECK(box.type == shape::kind::box);
+    CHECK(models_test::count_contacts(m, S + "foot", contact_point::kind::other) == 0);
+    CHECK(models_test::count_contacts(m, S + "toes", contact_point::kind::other) == 0);
     for (const contact_point& c : m.contact_points) {
       if (c.body != m.body_index(S + "foot")) continue;
       const Eigen::Vector3d rel = (c.position - box.center).cwiseAbs();
@@ -106,6 +113,120 @@ TEST_CASE("wang2009_humanoid mass, geometry and contacts", "[models][wang2009]")
                     (foot.mass + toe.mass);
   CHECK((cx - heel_x) / foot_len == Approx(0.4415).margin(0.005));
   CHECK(foot.mass + toe.mass == Approx(70.0 * 0.0137));
+}
+
+namespace {
+/// Distance of body-frame point p from the surface of shape s, m.
+double distance_to_surface(const shape& s, const Eigen::Vector3d& p) {
+  switch (s.type) {
+    case shape::kind::box: {
+      // On the surface: inside or on the box, and on at least one face.
+      const Eigen::Vector3d rel = (p - s.center).cwiseAbs() - s.half_extents;
+      return rel.maxCoeff() <= 0 ? -rel.maxCoeff() : rel.cwiseMax(0.0).norm();
+    }
+    case shape::kind::capsule: {
+      const Eigen::Vector3d a = s.p1 - s.p0;
+      const double t = std::clamp((p - s.p0).dot(a) / a.squaredNorm(), 0.0, 1.0);
+      return std::abs((p - (s.p0 + t * a)).norm() - s.radius);
+    }
+    case shape::kind::sphere:
+      return std::abs((p - s.center).norm() - s.radius);
+  }
+  return 1e9;
+}
+
+/// The body points (role other) of a humanoid30 character: 43, on every body but the feet and
+/// toes, each on the surface of one of its body's visual shapes, mirror-symmetric, and at least
+/// 0.2 H above the sole plane at q = 0 (the knees' front points are about 0.26 H up, the long-armed
+/// character's hand tips 0.24 H), so that standing and walking do not touch the ground with them.
+void check_body_points(const floating_model& m) {
+  INFO(m.name);
+  const auto o = neutral_body_origins(m);
+  const double ground = neutral_lowest_contact(m), H = standing_height(m);
+  std::vector<int> per_body(m.bodies.size(), 0);
+  int others = 0;
+  double lowest = 1e9;
+  for (const contact_point& c : m.contact_points) {
+    ++per_body[c.body];
+    if (c.role != contact_point::kind::other) continue;
+    INFO(c.name);
+    ++others;
+    const body& bd = m.bodies[c.body];
+    CHECK(bd.name.find("foot") == std::string::npos);
+    CHECK(bd.name.find("toes") == std::string::npos);
+    double d = 1e9;
+    for (const shape& s : bd.shapes) d = std::min(d, distance_to_surface(s, c.position));
+    CHECK(d < 1e-12);
+    const double z = o[c.body].z() + c.position.z() - ground;
+    CHECK(z >= 0.2 * H);
+    lowest = std::min(lowest, z);
+    // Its mirror image (l <-> r, y negated; central points mirror to a point of the same body).
+    std::string mirror = c.name;
+    if (c.name[0] == 'l' || c.name[0] == 'r') mirror[0] = c.name[0] == 'l' ? 'r' : 'l';
+    if (c.name.find("left") != std::string::npos)
+      mirror.replace(c.name.find("left"), 4, "right");
+    else if (c.name.find("right") != std::string::npos)
+      mirror.replace(c.name.find("right"), 5, "left");
+    int found = 0;
+    for (const contact_point& e : m.contact_points)
+      if (e.name == mirror) {
+        ++found;
+        CHECK(e.body == m.mirror_body[c.body]);
+        CHECK(e.role == contact_point::kind::other);
+        CHECK(e.position.isApprox(c.position.cwiseProduct(Eigen::Vector3d(1, -1, 1)), 1e-12));
+      }
+    CHECK(found == 1);
+  }
+  CHECK(others == 43);
+  CHECK(lowest < 0.3 * H);  // the check above is not vacuous
+  // Every body can touch the ground.
+  for (std::size_t b = 0; b < m.bodies.size(); ++b) {
+    INFO(m.bodies[b].name);
+    CHECK(per_body[b] >= 1);
+  }
+  // Per body: pelvis 4 bottom corners, torso 8 corners, head 13, thigh 3 (buttock, hip and knee
+  // lateral), shin 1 (knee front), upper arm 3 (shoulder lateral, elbow lateral and medial), lower
+  // arm 2 (elbow back, hand tip).
+  using models_test::count_contacts;
+  constexpr auto other = contact_point::kind::other;
+  CHECK(count_contacts(m, "pelvis", other) == 4);
+  CHECK(count_contacts(m, "torso", other) == 8);
+  CHECK(count_contacts(m, "head", other) == 13);
+  for (const char* side : {"l", "r"}) {
+    const std::string S = side;
+    CHECK(count_contacts(m, S + "thigh", other) == 3);
+    CHECK(count_contacts(m, S + "shin", other) == 1);
+    CHECK(count_contacts(m, S + "upper_arm", other) == 3);
+    CHECK(count_contacts(m, S + "lower_arm", other) == 2);
+  }
+  // A few points where their names put them.
+  const auto at = [&](const char* name) {
+    for (const contact_point& c : m.contact_points)
+      if (c.name == name) return Eigen::Vector3d(o[c.body] + c.position);
+    FAIL("no contact point " << name);
+    return Eigen::Vector3d(0, 0, 0);
+  };
+  const body& head = m.bodies[m.body_index("head")];
+  CHECK(at("head_top").z() == Approx(o[m.body_index("head")].z() + head.segment_end.z()));
+  CHECK(at("lknee_front").x() > 0);
+  CHECK(at("lknee_front").z() ==
+        Approx(o[m.body_index("lshin")].z() - m.bodies[m.body_index("lshin")].shapes[0].radius));
+  CHECK(at("lbuttock").x() < 0);
+  CHECK(at("torso_back_left_top").x() < 0);
+  CHECK(at("torso_back_left_top").y() > 0);
+  CHECK(at("torso_back_left_top").z() == Approx(o[m.body_index("head")].z()));
+  CHECK(at("lhand_tip").z() < at("lelbow_back").z());
+  CHECK(at("lshoulder_lat").y() > at("torso_front_left_top").y());
+}
+}  // namespace
+
+TEST_CASE("every body of wang2009_humanoid has contact points", "[models][wang2009]") {
+  for (const wang2009_shape shape : wang2009_shapes) check_body_points(wang2009_humanoid(shape));
+  // The foot and toe points are unchanged: 4 sole, 4 toe and 2 toe-top points per foot, first.
+  const floating_model m = wang2009_humanoid();
+  REQUIRE(m.contact_points.size() == 20 + 43);
+  for (std::size_t k = 0; k < m.contact_points.size(); ++k)
+    CHECK((m.contact_points[k].role == contact_point::kind::other) == (k >= 20));
 }
 
 TEST_CASE("wang2009_humanoid inertias follow de Leva's radii of gyration", "[models][wang2009]") {

@@ -1,9 +1,11 @@
 // The humanoid of Wang et al. 2012 (models/wang2012.hpp).
 #include "gaitsynth/models/wang2012.hpp"
 
+#include <algorithm>
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <numbers>
+#include <vector>
 
 #include "gaitsynth/models/wang2009.hpp"
 #include "models/model_checks.hpp"
@@ -25,6 +27,33 @@ TEST_CASE("wang2012_humanoid: 180 cm, 70 kg, 30 DOFs", "[models][wang2012]") {
   }
   models_test::check_mirror(m, 12);
   models_test::check_limit_stability(m);
+}
+
+TEST_CASE("wang2012_humanoid has the Wang 2009 body contact points", "[models][wang2012]") {
+  // Same builder: 43 points of role other on the trunk, head, arms and legs (tests/models/
+  // wang2009.cpp checks where), after the 36 foot and toe points, none within 0.2 H of the sole
+  // plane at q = 0; every body has at least one point.
+  const floating_model m = wang2012_humanoid();
+  const floating_model w = wang2009_humanoid(wang2009_body{.height = 1.8, .mass = 70});
+  REQUIRE(m.contact_points.size() == 36 + 43);
+  const auto o = neutral_body_origins(m);
+  const double ground = neutral_lowest_contact(m);
+  std::vector<int> per_body(m.bodies.size(), 0);
+  std::size_t k = 0;
+  for (const contact_point& c : m.contact_points) {
+    INFO(c.name);
+    ++per_body[c.body];
+    CHECK((c.role == contact_point::kind::other) == (k++ >= 36));
+    if (c.role != contact_point::kind::other) continue;
+    CHECK(o[c.body].z() + c.position.z() - ground >= 0.2 * 1.8);
+    // The Wang 2009 character of the same size has the same point.
+    const auto it = std::find_if(w.contact_points.begin(), w.contact_points.end(),
+                                 [&](const contact_point& e) { return e.name == c.name; });
+    REQUIRE(it != w.contact_points.end());
+    CHECK(it->body == c.body);
+    CHECK(it->position.isApprox(c.position, 1e-12));
+  }
+  for (std::size_t b = 0; b < m.bodies.size(); ++b) CHECK(per_body[b] >= 1);
 }
 
 TEST_CASE("wang2012_humanoid Geyer-Herr soft limits", "[models][wang2012]") {

@@ -4,7 +4,9 @@
 /// 2009 (Section 3, Fig. 8): the SIMBICON character (Yin et al. 2007) with toes, 30 internal DOFs
 ///   back (3), neck (3), shoulders (3 each), elbows (2 each), hips (3 each), knees (1 each),
 ///   ankles (2 each), toe hinges (1 each),
-/// box feet and toes with 4 contact points each, and the six body shapes of Fig. 8 as presets.
+/// box feet and toes with 4 contact points each (plus 43 body points of role other on the trunk,
+/// head, arms and legs, so that a fall lies on the ground), and the six body shapes of Fig. 8 as
+/// presets.
 /// The paper takes its mass distribution from Wooten & Hodgins 1996 without printing it; we use de
 /// Leva 1996 (models/anthropometry.hpp). Every number and choice is in docs/models.md.
 ///

@@ -10,7 +10,8 @@
 /// Wang et al. 2009) and adjusts its lower-body joint locations and mass distribution to Hamner et
 /// al. 2010 without printing numbers; we build it like wang2009_humanoid (de Leva 1996, see
 /// docs/models.md) at 1.80 m and 70 kg, with the same DOF names and order (wang2009.hpp), and
-/// replace the foot's 4 box corners with heel and ball cylinders sampled by contact points.
+/// replace the foot's 4 box corners with heel and ball cylinders sampled by contact points (and
+/// the same 43 body points of role other, so that a fall lies on the ground).
 ///
 /// Geyer & Herr soft limits (0.3 N m/deg = 17.19 N m/rad past the bound): ankle between 20 deg of
 /// dorsiflexion and 40 deg of plantarflexion (their 70..130 deg shank-foot angle), knee

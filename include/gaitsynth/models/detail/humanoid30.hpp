@@ -2,11 +2,15 @@
 /// \file humanoid30.hpp
 /// The 30-DOF SIMBICON-style humanoid (Yin et al. 2007 plus toes, Wang et al. 2009 Section 3) built
 /// from de Leva's segment table (models/anthropometry.hpp) for any height and mass. Used by
-/// wang2009_humanoid and wang2012_humanoid; the geometry rules are in docs/models.md.
+/// wang2009_humanoid and wang2012_humanoid; the geometry rules are in docs/models.md. Contact
+/// points: the feet and toes (roles sole, toe, toe_top; as the papers), then 43 body points (role
+/// other) on the trunk, head, arms and legs, so that a fallen character lies on the ground.
 #include <Eigen/Core>
 #include <array>
 #include <cmath>
+#include <numbers>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "gaitsynth/error.hpp"
@@ -187,13 +191,17 @@ inline floating_model build_humanoid30(const humanoid30_spec& sp) {
   const double tau_scale = (M / reference_limit_mass) * (H / reference_limit_height);
   const bool gh = sp.geyer_herr_sagittal_limits;
 
+  // Visual shapes that also carry the body contact points (role other, at the end).
+  const shape pelvis_box = trunk_box(m_lpt, 0, Llpt);
+  const shape thigh_capsule = limb_capsule(m_th, Lth), shin_capsule = limb_capsule(m_sh, Lsh);
+
   model_builder<floating_root> b(sp.name);
   // Pelvis (root): lower trunk, origin at the mid-point of the hip joint centres.
   b.add_body({.name = "pelvis",
               .mass = m_lpt,
               .com = {0, 0, Llpt * (1 - 0.01 * dl::lower_trunk.com_percent)},
               .inertia = dl::upright_inertia(dl::lower_trunk, m_lpt, Llpt),
-              .shapes = {trunk_box(m_lpt, 0, Llpt)},
+              .shapes = {pelvis_box},
               .length = Llpt,
               .segment_end = {0, 0, Llpt}});
   for (const bool right : {false, true}) {
@@ -206,7 +214,7 @@ inline floating_model build_humanoid30(const humanoid30_spec& sp) {
                 .com = {0, 0, -0.01 * dl::thigh.com_percent * Lth},
                 .inertia = dl::upright_inertia(dl::thigh, m_th, Lth),
                 .dofs = make_dofs(hip_rows, S, right, k_scale, tau_scale, gh),
-                .shapes = {limb_capsule(m_th, Lth)},
+                .shapes = {thigh_capsule},
                 .length = Lth,
                 .segment_end = {0, 0, -Lth}});
     b.add_body({.name = S + "shin",
@@ -216,7 +224,7 @@ inline floating_model build_humanoid30(const humanoid30_spec& sp) {
                 .com = {0, 0, -0.01 * dl::shank.com_percent * Lsh},
                 .inertia = dl::upright_inertia(dl::shank, m_sh, Lsh),
                 .dofs = make_dofs(knee_rows, S, right, k_scale, tau_scale, gh),
-                .shapes = {limb_capsule(m_sh, Lsh)},
+                .shapes = {shin_capsule},
                 .length = Lsh,
                 .segment_end = {0, 0, -Lsh}});
     const Eigen::Vector3d foot_size(Lft - Ltoe, wf, ha);
@@ -291,6 +299,8 @@ inline floating_model build_humanoid30(const humanoid30_spec& sp) {
                           dl::upright_inertia(dl::upper_trunk, m_upt, Lupt)};
   const solid::lumped torso = solid::combine(mpt, upt);
   const double Ltorso = Lmpt + Lupt;
+  const shape torso_box = trunk_box(torso.mass, 0, Ltorso);
+  const shape head_ball = sphere({0, 0, 0.62 * Lhead}, 0.38 * Lhead);
   b.add_body({.name = "torso",
               .parent = "pelvis",
               .joint_offset = {0, 0, Llpt},
@@ -298,7 +308,7 @@ inline floating_model build_humanoid30(const humanoid30_spec& sp) {
               .com = torso.com,
               .inertia = torso.inertia,
               .dofs = make_dofs(back_rows, "", false, k_scale, tau_scale),
-              .shapes = {trunk_box(torso.mass, 0, Ltorso)},
+              .shapes = {torso_box},
               .length = Ltorso,
               .segment_end = {0, 0, Ltorso}});
   b.add_body({.name = "head",
@@ -308,10 +318,12 @@ inline floating_model build_humanoid30(const humanoid30_spec& sp) {
               .com = {0, 0, Lhead * (1 - 0.01 * dl::head.com_percent)},
               .inertia = dl::upright_inertia(dl::head, m_head, Lhead),
               .dofs = make_dofs(neck_rows, "", false, k_scale, tau_scale),
-              .shapes = {sphere({0, 0, 0.62 * Lhead}, 0.38 * Lhead),
-                         capsule({0, 0, 0}, {0, 0, 0.3 * Lhead}, 0.2 * Lhead)},
+              .shapes = {head_ball, capsule({0, 0, 0}, {0, 0, 0.3 * Lhead}, 0.2 * Lhead)},
               .length = Lhead,
               .segment_end = {0, 0, Lhead}});
+  const shape upper_arm_capsule = limb_capsule(m_ua, Lua),
+              forearm_capsule = limb_capsule(m_fa, Lfa);
+  const shape hand_capsule = capsule({0, 0, -Lfa}, {0, 0, -Lfa - Lha}, 0.025 * as);
   for (const bool right : {false, true}) {
     const std::string S = right ? "r" : "l";
     const double side = right ? -1.0 : 1.0;
@@ -323,7 +335,7 @@ inline floating_model build_humanoid30(const humanoid30_spec& sp) {
          .com = {0, 0, -0.01 * dl::upper_arm.com_percent * Lua},
          .inertia = dl::upright_inertia(dl::upper_arm, m_ua, Lua),
          .dofs = make_dofs(shoulder_rows, S, right, k_scale, tau_scale),
-         .shapes = {limb_capsule(m_ua, Lua)},
+         .shapes = {upper_arm_capsule},
          .length = Lua,
          .segment_end = {0, 0, -Lua}});
     // Lower arm: forearm and hand welded together (the hand has no joint in the 30-DOF model).
@@ -334,17 +346,78 @@ inline floating_model build_humanoid30(const humanoid30_spec& sp) {
                             {0, 0, -Lfa - 0.01 * dl::hand.com_percent * Lha},
                             dl::upright_inertia(dl::hand, m_ha, Lha)};
     const solid::lumped lower = solid::combine(fa, ha_);
-    b.add_body(
-        {.name = S + "lower_arm",
-         .parent = S + "upper_arm",
-         .joint_offset = {0, 0, -Lua},
-         .mass = lower.mass,
-         .com = lower.com,
-         .inertia = lower.inertia,
-         .dofs = make_dofs(elbow_rows, S, right, k_scale, tau_scale),
-         .shapes = {limb_capsule(m_fa, Lfa), capsule({0, 0, -Lfa}, {0, 0, -Lfa - Lha}, 0.025 * as)},
-         .length = Lfa + Lha,
-         .segment_end = {0, 0, -Lfa - Lha}});
+    b.add_body({.name = S + "lower_arm",
+                .parent = S + "upper_arm",
+                .joint_offset = {0, 0, -Lua},
+                .mass = lower.mass,
+                .com = lower.com,
+                .inertia = lower.inertia,
+                .dofs = make_dofs(elbow_rows, S, right, k_scale, tau_scale),
+                .shapes = {forearm_capsule, hand_capsule},
+                .length = Lfa + Lha,
+                .segment_end = {0, 0, -Lfa - Lha}});
+  }
+
+  // Body contact points (role other; 43, after the foot and toe points, whose indices and per-body
+  // counts stay as they were): without them a character that falls sinks through the ground. They
+  // lie on the visual shapes above (so they scale with the body) where a falling, kneeling,
+  // sitting or lying body meets the ground (docs/models.md). At q = 0 the lowest, the knees' front
+  // points (the long-armed preset's hand tips), are 0.24-0.26 H above the sole plane.
+  const auto other = [&](std::string name, const std::string& body, const Eigen::Vector3d& p) {
+    b.add_contact_point({std::move(name), body, p, contact_point::kind::other});
+  };
+  // Trunk boxes: corner (sx, sy, sz), named <body>_<front|back>_<left|right>_<top|bottom>. The
+  // pelvis needs only its bottom corners (its top ones are next to the torso's bottom ones).
+  const auto corner = [&](const std::string& body, const shape& bx, int sx, int sy, int sz) {
+    other(body + (sx > 0 ? "_front" : "_back") + (sy > 0 ? "_left" : "_right") +
+              (sz > 0 ? "_top" : "_bottom"),
+          body, bx.center + bx.half_extents.cwiseProduct(Eigen::Vector3d(sx, sy, sz)));
+  };
+  for (const int sx : {1, -1})
+    for (const int sy : {1, -1}) corner("pelvis", pelvis_box, sx, sy, -1);
+  for (const int sz : {1, -1})
+    for (const int sx : {1, -1})
+      for (const int sy : {1, -1}) corner("torso", torso_box, sx, sy, sz);
+  // Head sphere: the top, 8 points around the equator (every 45 degrees) and 4 at 45 degrees of
+  // elevation (front, left, back, right), so that no part of the upper half is more than about
+  // 35 degrees from a point (it sinks at most 0.38 Lhead (1 - cos 35 deg) = 0.07 Lhead).
+  const double c45 = 0.5 * std::numbers::sqrt2;
+  const std::array<std::pair<const char*, Eigen::Vector2d>, 8> around{
+      {{"front", {1, 0}},
+       {"front_left", {c45, c45}},
+       {"left", {0, 1}},
+       {"back_left", {-c45, c45}},
+       {"back", {-1, 0}},
+       {"back_right", {-c45, -c45}},
+       {"right", {0, -1}},
+       {"front_right", {c45, -c45}}}};
+  const Eigen::Vector3d hc = head_ball.center;
+  const double hr = head_ball.radius;
+  other("head_top", "head", hc + Eigen::Vector3d(0, 0, hr));
+  for (std::size_t k = 0; k < around.size(); ++k) {
+    const auto& [where, u] = around[k];
+    other(std::string("head_") + where, "head", hc + hr * Eigen::Vector3d(u.x(), u.y(), 0));
+    if (k % 2 == 0)
+      other(std::string("head_") + where + "_top", "head",
+            hc + hr * c45 * Eigen::Vector3d(u.x(), u.y(), 1));
+  }
+  // Limb capsules: points on their end spheres (centre p0 at the proximal end, p1 at the distal
+  // end) offset by the radius: forward (+x), backward, lateral (+y on the left, -y on the right),
+  // medial or down.
+  const Eigen::Vector3d fwd = Eigen::Vector3d::UnitX(), down = -Eigen::Vector3d::UnitZ();
+  for (const bool right : {false, true}) {
+    const std::string S = right ? "r" : "l";
+    const Eigen::Vector3d lat(0, right ? -1.0 : 1.0, 0);
+    const double rt = thigh_capsule.radius, ru = upper_arm_capsule.radius;
+    other(S + "buttock", S + "thigh", thigh_capsule.p0 - rt * fwd);
+    other(S + "hip_lat", S + "thigh", thigh_capsule.p0 + rt * lat);
+    other(S + "knee_lat", S + "thigh", thigh_capsule.p1 + rt * lat);
+    other(S + "knee_front", S + "shin", shin_capsule.p0 + shin_capsule.radius * fwd);
+    other(S + "shoulder_lat", S + "upper_arm", upper_arm_capsule.p0 + ru * lat);
+    other(S + "elbow_lat", S + "upper_arm", upper_arm_capsule.p1 + ru * lat);
+    other(S + "elbow_med", S + "upper_arm", upper_arm_capsule.p1 - ru * lat);
+    other(S + "elbow_back", S + "lower_arm", forearm_capsule.p0 - forearm_capsule.radius * fwd);
+    other(S + "hand_tip", S + "lower_arm", hand_capsule.p1 + hand_capsule.radius * down);
   }
   return b.build();
 }
