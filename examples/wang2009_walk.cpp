@@ -163,6 +163,7 @@ int main(int argc, char** argv) try {
   oo.target_step_length = c.step_length;
   if (c.shape == "long_arm" || c.shape == "long arm") oo.fail_height = 0.4;  // Sec. 4.1
   rollout_options opt = simulation_options();
+  opt.initial_state = make_state(m);  // sized, so the controller writes its start in place
   opt.fall_height = oo.fail_height;
   const auto obj = wang2009_objective(m, oo);
   const rollout_problem prob{

@@ -9,8 +9,10 @@
 
 #include "mujoco_peer/mujoco_peer.hpp"
 
+#include "gaitsynth/actuators/mixed_pd.hpp"
 #include "gaitsynth/actuators/pd.hpp"
 #include "gaitsynth/contact/flat_terrain.hpp"
+#include "gaitsynth/controllers/fsm/simbicon.hpp"
 #include "gaitsynth/controllers/pose_hold.hpp"
 #include "gaitsynth/dynamics/aba.hpp"
 #include "gaitsynth/dynamics/center_of_mass.hpp"
@@ -20,6 +22,7 @@
 #include "gaitsynth/models/sharon2005.hpp"
 #include "gaitsynth/models/wang2009.hpp"
 #include "gaitsynth/objectives/distance.hpp"
+#include "gaitsynth/objectives/wang2009/wang2009_objective.hpp"
 #include "gaitsynth/rollout/rollout.hpp"
 
 namespace {
@@ -76,6 +79,37 @@ void BM_Rollout_Humanoid3D_Stand10s_RK4(benchmark::State& state) {
   bench_rollout<floating_model, odeint_rk4>(state, wang2009_humanoid());
 }
 BENCHMARK(BM_Rollout_Humanoid3D_Stand10s_RK4)->Unit(benchmark::kMillisecond)->MinTime(2.0);
+
+/// A 10 s walk per iteration: SIMBICON (controllers/fsm/simbicon.hpp) on the 3D humanoid through
+/// mixed_pd_actuator, scored by the whole objective of Wang et al. 2009 (eq. 16), mu = 10: what
+/// one evaluation of a Wang 2009 optimization costs (the optimized controller adds a few world
+/// servos of the same kind).
+void BM_Rollout_Humanoid3D_SimbiconWalk10s(benchmark::State& state) {
+  const floating_model m = wang2009_humanoid();
+  const auto [kp, kd] = simbicon_walk_gains(m);
+  simbicon_controller ctrl(m, kp, kd);
+  const std::vector<double> p = simbicon_walk_parameters();
+  const auto obj = wang2009_objective(m);
+  rollout_options opt;
+  opt.contact.mu = 10.0;
+  opt.initial_state = simbicon_start_state(m);
+  auto scr = make_rollout_scratch(m);
+  rollout_policy_states<mixed_pd_actuator, simbicon_controller, wang2009_objective_type> states;
+  semi_implicit_euler integ;
+  std::int64_t steps = 0;
+  for (auto _ : state) {
+    const rollout_result r = rollout(m, mixed_pd_actuator{}, ctrl, obj, flat_terrain{}, integ,
+                                     std::span<const double>(p), opt, scr, states);
+    if (r.reason != stop_reason::horizon) state.SkipWithError("SIMBICON did not walk 10 s");
+    steps += r.steps;
+    benchmark::DoNotOptimize(r.cost);
+  }
+  state.counters["real_time_factor"] = benchmark::Counter(
+      10.0 * static_cast<double>(state.iterations()), benchmark::Counter::kIsRate);
+  state.counters["us_per_step"] = benchmark::Counter(
+      1e-6 * static_cast<double>(steps), benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
+}
+BENCHMARK(BM_Rollout_Humanoid3D_SimbiconWalk10s)->Unit(benchmark::kMillisecond)->MinTime(2.0);
 
 /// One full step of the rollout's order, written out with the public algorithms: kinematics, COM,
 /// penalty contact at all points (16 sole points touching while standing), PD torques, passive

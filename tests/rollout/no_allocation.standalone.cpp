@@ -84,6 +84,9 @@ __attribute__((noinline)) void operator delete[](void* p, std::size_t, std::alig
 #include "gaitsynth/actuators/torque.hpp"
 #include "gaitsynth/contact/flat_terrain.hpp"
 #include "gaitsynth/contact/slope_terrain.hpp"
+#include "gaitsynth/controllers/fsm/simbicon.hpp"
+#include "gaitsynth/controllers/fsm/wang2009_controller.hpp"
+#include "gaitsynth/controllers/fsm/wang2009_table2.hpp"
 #include "gaitsynth/controllers/nearest_neighbor_json.hpp"
 #include "gaitsynth/controllers/pose_hold.hpp"
 #include "gaitsynth/integrators/odeint.hpp"
@@ -91,6 +94,7 @@ __attribute__((noinline)) void operator delete[](void* p, std::size_t, std::alig
 #include "gaitsynth/motion/keyframes_json.hpp"
 #include "gaitsynth/objectives/distance.hpp"
 #include "gaitsynth/objectives/mass_distance.hpp"
+#include "gaitsynth/objectives/wang2009/wang2009_objective.hpp"
 #include "gaitsynth/rollout/problem.hpp"
 #include "gaitsynth/rollout/rollout.hpp"
 #include "gaitsynth/synthesis/nearest_neighbor_synthesis.hpp"
@@ -323,5 +327,30 @@ TEST_CASE("an evaluation on a reused problem context allocates nothing",
                                odeint_rk4{},
                                options_for(m, flat_terrain())};
     require_allocation_free_cost(prob, standing_pose(m), 0.1);
+  }
+  SECTION("3D humanoid: Wang 2009 controller from Table 2, the whole eq. 16 objective") {
+    const auto m = wang2009_humanoid();
+    wang2009_controller c(m);
+    const std::vector<double> p = wang2009_table2_parameters(m, c);
+    c.bind(p);
+    rollout_options ro;
+    ro.contact.mu = 10.0;
+    ro.initial_state = make_state(m);  // sized: the controller writes its start state in place
+    const rollout_problem prob{m, mixed_pd_actuator{}, c, wang2009_objective(m), flat_terrain{},
+                               semi_implicit_euler{}, ro};
+    require_allocation_free_cost(prob, prob.initial_parameters(), 0.3);
+  }
+  SECTION("3D humanoid: SIMBICON, the Wang 2009 objective with a target speed") {
+    const auto m = wang2009_humanoid();
+    const auto [kp, kd] = simbicon_walk_gains(m);
+    simbicon_controller c(m, kp, kd);
+    c.bind(simbicon_walk_parameters());
+    rollout_options ro;
+    ro.contact.mu = 10.0;
+    ro.initial_state = simbicon_start_state(m);
+    const rollout_problem prob{m, mixed_pd_actuator{}, c,
+                               wang2009_objective(m, {.target_speed = 1.0}), flat_terrain{},
+                               semi_implicit_euler{}, ro};
+    require_allocation_free_cost(prob, prob.initial_parameters(), 0.5);
   }
 }

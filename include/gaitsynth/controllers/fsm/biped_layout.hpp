@@ -2,10 +2,15 @@
 /// \file controllers/fsm/biped_layout.hpp
 /// Where a SIMBICON-style controller finds its joints: the DOF and body indices of a 30-DOF
 /// humanoid (models/wang2009.hpp, models/wang2012.hpp), looked up by name once at construction, so
-/// the step loop indexes arrays. Side 0 is the left, 1 the right.
+/// the step loop indexes arrays. Side 0 is the left, 1 the right. Also where the feet are.
+#include <Eigen/Core>
+#include <algorithm>
 #include <array>
+#include <limits>
 #include <string>
 
+#include "gaitsynth/dynamics/kinematics.hpp"
+#include "gaitsynth/dynamics/workspace.hpp"
 #include "gaitsynth/model/model.hpp"
 
 namespace gaitsynth {
@@ -63,5 +68,18 @@ struct biped_layout {
     return L;
   }
 };
+
+/// Height (m) of the lowest sole or toe contact point of m in configuration q: subtracting it from
+/// the root height stands the character on z = 0. Set-up helper (allocates a workspace).
+template <root_joint Root>
+double lowest_foot_point(const model<Root>& m, const Eigen::VectorXd& q) {
+  auto ws = make_workspace(m);
+  forward_kinematics(m, ws, q);
+  double lowest = std::numeric_limits<double>::infinity();
+  for (const contact_point& cp : m.contact_points)
+    if (cp.role == contact_point::kind::sole || cp.role == contact_point::kind::toe)
+      lowest = std::min(lowest, point_position(m, ws, cp.body, cp.position).z());
+  return lowest;
+}
 
 }  // namespace gaitsynth

@@ -138,9 +138,13 @@ class wang2009_controller {
 
   /// The start state of the parameters (Sec. 3): root at (0, 0, z) pitched about y, moving in the
   /// x-z plane, the free joint DOFs at their angles and rates, every other DOF at 0.
+  /// Writes in place (no allocation when s already has the model's sizes: give the rollout an
+  /// initial state of those sizes, e.g. make_state(m), so it skips placing its default one).
   void initial_state(const floating_model& m, sim_state& s) const {
-    s.q = neutral_configuration(m);
-    s.v = Eigen::VectorXd::Zero(m.nv());
+    s.q.resize(m.nq());
+    s.v.resize(m.nv());
+    s.q.setZero();
+    s.v.setZero();
     const double z = p_[params_.root_start(0)], pitch = p_[params_.root_start(1)];
     s.q[2] = z;
     s.q[3] = std::cos(0.5 * pitch);

@@ -97,13 +97,7 @@ inline std::vector<double> wang2009_table2_parameters(const floating_model& m,
   Eigen::VectorXd q = neutral_configuration(m);
   for (int k = 0; k < static_cast<int>(L.start_dofs.size()); ++k)
     q[floating_root::nq + m.dof_index(L.start_dofs[k])] = p[L.start_angle(k)];
-  auto ws = make_workspace(m);
-  forward_kinematics(m, ws, q);
-  double lowest = std::numeric_limits<double>::infinity();
-  for (const contact_point& cp : m.contact_points)
-    if (cp.role == contact_point::kind::sole || cp.role == contact_point::kind::toe)
-      lowest = std::min(lowest, point_position(m, ws, cp.body, cp.position).z());
-  p[L.root_start(0)] = -lowest;
+  p[L.root_start(0)] = -lowest_foot_point(m, q);
   return p;
 }
 

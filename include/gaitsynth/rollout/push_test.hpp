@@ -1,0 +1,113 @@
+#pragma once
+/// \file rollout/push_test.hpp
+/// The push-recovery protocol of Wang, Fleet & Hertzmann 2009 (Sec. 5, Table 1): "simulate
+/// forward for 40 seconds, and apply a push force (F_x, F_y) for 0.4 seconds to the torso COM
+/// once every 4 seconds ... The controller passes the experiment if it is still walking forward
+/// (direction (1, 0)) after 40 seconds." Table 1 reports force components: direction (1, 1) at
+/// 75 N is F = (75, 75) N.
+///
+/// Here the pushes start at t0 + period (4, 8, ..., 36 s: nine pushes, 4 s to recover from the
+/// last), and "still walking forward" means the rollout did not fall (COM above the fall height)
+/// and its COM advanced along +x at `min_forward_speed` or faster over the last period.
+#include <array>
+#include <cmath>
+#include <functional>
+#include <span>
+#include <vector>
+
+#include "gaitsynth/contact/push.hpp"
+#include "gaitsynth/error.hpp"
+#include "gaitsynth/objectives/distance.hpp"
+#include "gaitsynth/rollout/options.hpp"
+#include "gaitsynth/rollout/rollout.hpp"
+
+namespace gaitsynth {
+
+struct push_protocol {
+  double duration = 40.0;          ///< s
+  double period = 4.0;             ///< s between push starts
+  double push_duration = 0.4;      ///< s
+  double min_forward_speed = 0.1;  ///< m/s over the last period: "still walking forward"
+  double max_force = 500.0;        ///< N, largest force component tried by max_push_force
+  double resolution = 5.0;         ///< N, step of the force components tried
+};
+
+/// What one push trial gives.
+struct push_trial {
+  bool passed = false;
+  rollout_result result;
+  double final_speed = 0.0;  ///< m/s, the COM's mean x velocity over the last period
+};
+
+namespace detail {
+/// Records the COM's x at the start of the last period.
+struct last_period_observer {
+  double t_mark = 0.0;
+  double x_mark = std::nan("");
+  template <class Ob>
+  void observe(const Ob& ob) {
+    if (std::isnan(x_mark) && ob.t >= t_mark) x_mark = ob.com.x();
+  }
+};
+}  // namespace detail
+
+/// One trial: the walk of `opt` (its initial state, contact, fall height) for proto.duration with
+/// periodic pushes of `force` (world, N) on body `body`'s COM. Any other pushes in opt are kept.
+template <root_joint Root, class Actuator, class Controller, terrain Terrain, class Integrator>
+push_trial push_trial_run(const model<Root>& m, const Actuator& act, const Controller& ctrl,
+                          const Terrain& ground, const Integrator& integ,
+                          std::span<const double> params, rollout_options opt, int body,
+                          const vec3& force, const push_protocol& proto = {}) {
+  check_positive(proto.duration, "push_protocol::duration (s)");
+  check_positive(proto.period, "push_protocol::period (s)");
+  const int count = static_cast<int>(std::floor((proto.duration - 1e-9) / proto.period));
+  const double t0 = opt.initial_state.q.size() > 0 ? opt.initial_state.t : 0.0;
+  for (const push& p :
+       periodic_pushes(body, force, t0 + proto.period, proto.period, proto.push_duration, count))
+    opt.pushes.push_back(p);
+  opt.duration = proto.duration;
+  opt.record = nullptr;
+  auto scratch = make_rollout_scratch(m);
+  detail::last_period_observer ob;
+  ob.t_mark = t0 + proto.duration - proto.period;
+  Controller c = ctrl;
+  Integrator i = integ;
+  push_trial out;
+  out.result = rollout(m, act, c, distance_objective(), ground, i, params, opt, scratch, ob);
+  out.final_speed =
+      std::isnan(ob.x_mark) ? 0.0 : (out.result.com_final.x() - ob.x_mark) / proto.period;
+  out.passed =
+      out.result.reason == stop_reason::horizon && out.final_speed >= proto.min_forward_speed;
+  return out;
+}
+
+/// Table 1's entry for one direction (components in {-1, 0, 1}, e.g. (1, 1)): the largest force
+/// component F, in steps of proto.resolution up to proto.max_force, such that every push
+/// F' direction with F' <= F on that grid passes (the scan stops at the first failure). 0 if the
+/// walk fails even at the first step; the walk without pushes is not checked here.
+template <root_joint Root, class Actuator, class Controller, terrain Terrain, class Integrator>
+double max_push_force(const model<Root>& m, const Actuator& act, const Controller& ctrl,
+                      const Terrain& ground, const Integrator& integ,
+                      std::span<const double> params, const rollout_options& opt, int body,
+                      const vec3& direction, const push_protocol& proto = {}) {
+  check_positive(proto.resolution, "push_protocol::resolution (N)");
+  double survived = 0.0;
+  for (double f = proto.resolution; f <= proto.max_force + 1e-9; f += proto.resolution) {
+    if (!push_trial_run(m, act, ctrl, ground, integ, params, opt, body, vec3(f * direction), proto)
+             .passed)
+      break;
+    survived = f;
+  }
+  return survived;
+}
+
+/// Table 1's eight directions, in its order: (1,0), (1,1), (0,1), (-1,1), (-1,0), (-1,-1),
+/// (0,-1), (1,-1); (1, 0) is forward, (0, 1) to the left.
+inline const std::array<vec3, 8>& table1_directions() {
+  static const std::array<vec3, 8> d{vec3(1, 0, 0),  vec3(1, 1, 0),  vec3(0, 1, 0),
+                                     vec3(-1, 1, 0), vec3(-1, 0, 0), vec3(-1, -1, 0),
+                                     vec3(0, -1, 0), vec3(1, -1, 0)};
+  return d;
+}
+
+}  // namespace gaitsynth
