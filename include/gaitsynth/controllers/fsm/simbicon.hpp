@@ -73,8 +73,8 @@ class simbicon_controller {
   std::size_t num_parameters() const { return 2 * per_state; }
   std::vector<std::string> parameter_names() const {
     std::vector<std::string> n;
-    for (int s = 0; s < 2; ++s)
-      for (const char* f : field_names) n.push_back("s" + std::to_string(s) + "." + f);
+    for (const char* prefix : {"s0.", "s1."})
+      for (const char* f : field_names) n.push_back(std::string(prefix) + f);
     return n;
   }
   std::vector<double> parameters() const { return {p_.begin(), p_.end()}; }

@@ -81,7 +81,7 @@ std::vector<std::string> wang2009_parameter_names(const model<Root>& m) {
   const wang2009_parameter_layout L{m.num_joint_dofs()};
   std::vector<std::string> out(static_cast<std::size_t>(L.size()));
   for (int s = 0; s < 2; ++s) {
-    const std::string p = "s" + std::to_string(s) + ".";
+    const std::string p = s == 0 ? "s0." : "s1.";
     for (int r = 0; r < L.nj; ++r) {
       out[L.kp(s, r)] = p + "kp." + wang2009_role_name(m, r);
       out[L.kd(s, r)] = p + "kd." + wang2009_role_name(m, r);
