@@ -264,6 +264,15 @@ TEST_CASE("no heap allocation in the step loop of a rollout", "[rollout][allocat
                           pose_hold(m, {.output = command_kind::mixed, .kp = g.kp, .kd = g.kd}),
                           flat_terrain(), semi_implicit_euler(), options_for(m, flat_terrain()));
   }
+  SECTION("3D humanoid, mixed PD actuator, implicit joint damping") {
+    const auto m = wang2009_humanoid();
+    const pd_actuator g = standing_pd(m, dt);
+    auto opt = options_for(m, flat_terrain());
+    opt.implicit_joint_damping = true;
+    require_no_allocation(m, mixed_pd_actuator{},
+                          pose_hold(m, {.output = command_kind::mixed, .kp = g.kp, .kd = g.kd}),
+                          flat_terrain(), semi_implicit_euler(), opt);
+  }
   SECTION("3D humanoid, lagged PD integrated with the body by RK4 (torques at every stage)") {
     const auto m = wang2009_humanoid();
     static_assert(actuator_with_continuous_state<lagged_pd, floating_root>);

@@ -42,6 +42,12 @@
 ///                                      re-evaluated from (q, v, st) at every stage. Otherwise the
 ///                                      rollout takes st += dt * dst after the physics step.
 ///   a.sensed_size(m), a.sense(m, cst, out)   values exposed to controllers (see below)
+///   a.joint_damping(m, s, cmd, cst, c) c_j >= 0 (N m s / rad), the joint-rate coefficient of each
+///                                      DOF's law for (s, cmd): kd_j for a PD servo, before the
+///                                      torque limit's clamp (size num_joint_dofs; must not
+///                                      allocate). With rollout_options::implicit_joint_damping
+///                                      the rollout takes these dampers implicitly (backward
+///                                      Euler, rollout.hpp)
 #include <Eigen/Core>
 #include <concepts>
 #include <span>
@@ -115,6 +121,15 @@ concept actuator_with_derivative = requires(const A& a, const model<Root>& m, co
 template <class A, class Root>
 concept actuator_with_continuous_state =
     actuator_with_derivative<A, Root> && std::same_as<typename A::state_type, Eigen::VectorXd>;
+
+/// Optional: the joint-rate coefficients of the torques (see joint_damping above).
+template <class A, class Root>
+concept actuator_with_joint_damping = requires(const A& a, const model<Root>& m, const sim_state& s,
+                                               Eigen::Ref<const Eigen::VectorXd> cmd,
+                                               const typename A::state_type& cst,
+                                               Eigen::Ref<Eigen::VectorXd> c) {
+  a.joint_damping(m, s, cmd, cst, c);
+};
 
 /// Optional: a.reset_state(m, st) makes st what make_state(m) returns, without allocating (a
 /// worker's next rollout: rollout/policy_states.hpp).

@@ -19,6 +19,7 @@
 /// in the step loop (negative gains destabilize, NaN ones make the rollout report a non-finite
 /// state). mixed_command writes the blocks by DOF.
 #include <Eigen/Core>
+#include <limits>
 
 #include "gaitsynth/actuators/command_kind.hpp"
 #include "gaitsynth/actuators/concept.hpp"
@@ -84,6 +85,20 @@ struct mixed_pd_actuator {
           pd_torque(cmd[nj + j], cmd[2 * nj + j], cmd[j], s.q[Root::nq + j], s.v[Root::nv + j]) +
           cmd[3 * nj + j];
       tau[j] = clamp_torque(t, m.dofs[j].torque_limit);
+    }
+  }
+
+  /// The joint-rate coefficient of each DOF's law (actuators/concept.hpp, joint_damping): kd_j
+  /// (0 where kd_j <= 0 or not finite), also where the torque is clamped: taken implicitly, the
+  /// damper acts on the step's change of velocity beyond the limit (rollout_options::
+  /// implicit_joint_damping).
+  template <root_joint Root>
+  void joint_damping(const model<Root>& m, const sim_state&, Eigen::Ref<const Eigen::VectorXd> cmd,
+                     const state_type&, Eigen::Ref<Eigen::VectorXd> c) const {
+    const int nj = m.num_joint_dofs();
+    for (int j = 0; j < nj; ++j) {
+      const double kd = cmd[2 * nj + j];
+      c[j] = (kd > 0.0 && kd < std::numeric_limits<double>::infinity()) ? kd : 0.0;
     }
   }
 };

@@ -136,6 +136,14 @@ struct pd_actuator {
       tau[j] = clamp_torque(t, m.dofs[j].torque_limit);
     }
   }
+
+  /// The joint-rate coefficient of each DOF's law (actuators/concept.hpp, joint_damping): kd_j,
+  /// also where the torque is clamped (see mixed_pd_actuator::joint_damping).
+  template <root_joint Root>
+  void joint_damping(const model<Root>& m, const sim_state&, Eigen::Ref<const Eigen::VectorXd>,
+                     const state_type&, Eigen::Ref<Eigen::VectorXd> c) const {
+    c = kd.head(m.num_joint_dofs());
+  }
 };
 
 /// PD servos that hold a biped in a standing pose at timestep dt (tests, benchmarks, demos):

@@ -4,6 +4,7 @@
 /// world axes about the root origin (see workspace.hpp), with external body wrenches (ws.f_ext) and
 /// gravity as a fictitious base acceleration (sec. 5.3).
 #include <Eigen/Cholesky>
+#include <cmath>
 
 #include "gaitsynth/dynamics/kinematics.hpp"
 
@@ -60,10 +61,14 @@ Eigen::Matrix<double, N, 1> solve_spd(const Eigen::Matrix<double, N, N>& A,
   return x;
 }
 
-/// ABA passes 2 and 3 (kinematics must be current). Writes ws.ddq.
+/// ABA passes 2 and 3 (kinematics must be current). Writes ws.ddq. With `armature` (num_joint_dofs
+/// values >= 0, or nullptr for none) it solves (M + diag(armature)) ddq = tau - C instead: each
+/// DOF's D = S^T IA S gets its armature added (Featherstone 2008, sec. 7.3; Pinocchio's
+/// model.armature), which is how the rollout takes joint dampers implicitly (rollout_options::
+/// implicit_joint_damping). nullptr leaves every operation as it was.
 template <root_joint Root>
 void aba_passes(const model<Root>& m, workspace<Root>& ws,
-                const Eigen::Ref<const Eigen::VectorXd>& tau) {
+                const Eigen::Ref<const Eigen::VectorXd>& tau, const double* armature = nullptr) {
   auto& s = ws.scratch;
   constexpr int nvr = Root::nv;
   const int nn = s.nj + 1;
@@ -84,6 +89,7 @@ void aba_passes(const model<Root>& m, workspace<Root>& ws,
       s.Uacc[n].setZero();
       s.Dacc[n] = 0.0;
     }
+    if (armature != nullptr && n > 0) s.Dacc[n] += armature[n - 1];
   }
   // Pass 2 (backward): project each articulated inertia through its 1-DOF joint into the parent.
   // No coordinate transform is needed: all quantities share world axes and the reference point.
@@ -277,6 +283,16 @@ const Eigen::VectorXd& aba_with_current_kinematics(const model<Root>& m, workspa
   return ws.ddq;
 }
 
+/// The same with an armature per joint DOF (aba_passes), on the general path only: the caller
+/// makes sure the workspace does not run the planar fast path (disable_planar_path).
+template <root_joint Root>
+const Eigen::VectorXd& aba_with_current_kinematics(const model<Root>& m, workspace<Root>& ws,
+                                                   const Eigen::Ref<const Eigen::VectorXd>& tau,
+                                                   const double* armature) {
+  aba_passes(m, ws, tau, armature);
+  return ws.ddq;
+}
+
 }  // namespace detail
 
 /// Forward dynamics: the generalized accelerations ddq (size nv) for positions q (nq), velocities v
@@ -301,6 +317,34 @@ const Eigen::VectorXd& aba(const model<Root>& m, workspace<Root>& ws,
     }
   }
   detail::aba_passes(m, ws, tau);
+  return ws.ddq;
+}
+
+/// Forward dynamics with an armature a (num_joint_dofs values >= 0, kg m^2 for a hinge): solves
+/// (M(q) + diag(0_root, a)) ddq = tau - C(q, v) (gravity, external wrenches), M the joint-space
+/// inertia. With a_j = dt kd_j, that is one step of a joint damper kd taken implicitly
+/// (backward Euler: the damper's torque -kd (v + dt ddq)), stable for any kd, in any
+/// configuration. The general path only: \throws std::invalid_argument if ws runs the planar fast
+/// path (disable_planar_path(ws) first), a size is wrong or an armature entry is negative or not
+/// finite. \returns ws.ddq
+template <root_joint Root>
+const Eigen::VectorXd& aba(const model<Root>& m, workspace<Root>& ws,
+                           const Eigen::Ref<const Eigen::VectorXd>& q,
+                           const Eigen::Ref<const Eigen::VectorXd>& v,
+                           const Eigen::Ref<const Eigen::VectorXd>& tau,
+                           const Eigen::Ref<const Eigen::VectorXd>& armature) {
+  detail::check_workspace(m, ws);
+  detail::check_q(m, q);
+  detail::check_v(m, v, "v (generalized velocities)");
+  detail::check_v(m, tau, "tau (generalized forces)");
+  check_size(armature.size(), m.num_joint_dofs(), "armature (one value per joint DOF)");
+  for (Eigen::Index j = 0; j < armature.size(); ++j)
+    check_argument(std::isfinite(armature[j]) && armature[j] >= 0.0, "armature of DOF ", j,
+                   " must be finite and >= 0, got ", armature[j]);
+  check_argument(!detail::planar_path(ws),
+                 "aba with an armature runs the general path: call disable_planar_path(ws) first");
+  detail::ensure_kinematics_fast(m, ws, q, v);
+  detail::aba_passes(m, ws, tau, armature.data());
   return ws.ddq;
 }
 

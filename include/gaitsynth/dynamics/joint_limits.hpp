@@ -32,6 +32,14 @@ inline double joint_limit_torque(const joint_limit& L, double x, double xd) {
   return 0.0;
 }
 
+/// -d joint_limit_torque / d xd at angle x: the limit's damping past a bound, 0 inside (or for
+/// limit_model::none). The rollout takes this damper implicitly with
+/// rollout_options::implicit_joint_damping.
+inline double joint_limit_damping(const joint_limit& L, double x) {
+  if (L.model == limit_model::none) return 0.0;
+  return (x > L.upper || x < L.lower) ? L.damping : 0.0;
+}
+
 /// Adds the soft-limit torques of every joint DOF to tau_out (size nv; root entries untouched).
 /// \throws std::invalid_argument on wrong sizes.
 template <root_joint Root>

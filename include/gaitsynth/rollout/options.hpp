@@ -24,6 +24,20 @@ struct rollout_options {
   double fall_height = 0.0;    ///< m; if > 0 used as is
   double fall_fraction = 0.5;  ///< else: this fraction of the initial COM height above terrain
 
+  /// Joint dampers taken implicitly (backward Euler), off by default. The actuator's rate
+  /// coefficients (actuator_with_joint_damping: kd of every PD servo whose torque is not clamped)
+  /// and the damping of every soft joint limit past its bound enter the step as an armature
+  /// dt c_j on the joint-space inertia, (M + dt diag(c)) ddq = tau - C, so each damper applies
+  /// -c_j (v_j + dt ddq_j), the damper at the end of the step, instead of -c_j v_j. Explicit
+  /// dampers are stable only while c dt / I < 2 for the inertia I they move, and a 3-DOF Euler
+  /// joint (the humanoids' hips: x, then y, then z) has a mode of vanishing inertia near hip_y =
+  /// +-pi/2, where its x and z axes align: there any explicit damper diverges. The torques the
+  /// objective and the observers see are the applied ones (the explicit torque minus
+  /// c_j dt ddq_j); the clamp of a torque limit applies to the explicit part. General (6D) path
+  /// only: the rollout throws for a workspace on the planar fast path (disable_planar_path) and
+  /// for an actuator integrated with (q, v) (its torques are re-evaluated at integrator stages).
+  bool implicit_joint_damping = false;
+
   contact_parameters contact{};  ///< penalty contact (kp 75000 N/m, kd 2000 N s/m, mu 1)
   std::vector<push> pushes;      ///< external pushes (force on a body's COM over a time window)
 

@@ -24,10 +24,12 @@
 ///      period, the controller writes the command (held in between). Controllers read the step's
 ///      workspace and contact state through const views;
 ///   5. the actuator maps the command to joint torques (optionally reading the workspace);
-///      passive joint-limit torques are added;
+///      passive joint-limit torques are added; with options.implicit_joint_damping the joint
+///      dampers are solved for implicitly here (ABA with an armature) and the torques become the
+///      applied ones (rollout/options.hpp);
 ///   6. the objective accumulates this step (its view: state at t, torques and contact forces held
-///      over [t, t + dt), the controller's phase after this step's command); the observers observe it (the recorder stores a frame if due); stop if
-///      the objective is done;
+///      over [t, t + dt), the controller's phase after this step's command); the observers
+///      observe it (the recorder stores a frame if due); stop if the objective is done;
 ///   7. the integrator advances (q, v) with accelerations from ABA (torques and external wrenches
 ///      held constant over the step: zero-order hold, also for the stages of RK4). An actuator with
 ///      continuous dynamics (a derivative and a vector state) is integrated with (q, v) in the
@@ -88,6 +90,9 @@ struct rollout_scratch {
   Eigen::VectorXd sensed;       ///< the actuator's sensed values this step (actuator_with_sensing)
   sim_state stage;              ///< an integrator stage's state (coupled actuator dynamics)
   Eigen::VectorXd stage_tau;    ///< nv: total torques at that stage, N m
+  /// num_joint_dofs each: the actuator's and the joint limits' damping coefficients this step
+  /// (N m s / rad) and the armature dt (their sum) (rollout_options::implicit_joint_damping)
+  Eigen::VectorXd damping_actuator, damping_passive, armature;
   std::uint64_t model_fingerprint = 0;  ///< of the model ws and contacts were made for
   bool prepared = false;
 };
@@ -106,6 +111,9 @@ void prepare_rollout_scratch(const model<Root>& m, rollout_scratch<Root>& s) {
   s.contacts = make_contact_state(m);
   s.stage = make_state(m);
   s.stage_tau = Eigen::VectorXd::Zero(m.nv());
+  s.damping_actuator = Eigen::VectorXd::Zero(m.num_joint_dofs());
+  s.damping_passive = Eigen::VectorXd::Zero(m.num_joint_dofs());
+  s.armature = Eigen::VectorXd::Zero(m.num_joint_dofs());
   s.model_fingerprint = fp;
   s.prepared = true;
 }
@@ -243,6 +251,18 @@ rollout_result rollout_impl(const model<Root>& m, const Actuator& act, C& ctrl,
     integ.prepare(m, act_state.size());
   else
     integ.prepare(m);
+  const bool implicit_damping = opt.implicit_joint_damping;
+  if (implicit_damping) {
+    check_argument(!coupled,
+                   "rollout_options::implicit_joint_damping: not with an actuator integrated with "
+                   "(q, v) (its torques are re-evaluated at the integrator's stages)");
+    check_argument(!detail::planar_path(ws),
+                   "rollout_options::implicit_joint_damping: the planar fast path has no "
+                   "armature; call disable_planar_path(scratch.ws) first");
+    scr.damping_actuator.setZero();
+    scr.damping_passive.setZero();
+    scr.armature.setZero();
+  }
   validate_pushes(m, std::span<const push>(opt.pushes));
 
   const int nj = m.num_joint_dofs();
@@ -349,10 +369,16 @@ rollout_result rollout_impl(const model<Root>& m, const Actuator& act, C& ctrl,
   // integrator can change s or ws's kinematics (controllers, actuators and objectives see them
   // through const views), so aba()'s comparison of q and v with its cache is skipped.
   bool kinematics_current = false;
+  // With implicit joint damping, step 5 has solved the step's accelerations already (ws.ddq, for
+  // the applied torques tau_total): the first evaluation on the step's state takes them.
+  bool implicit_ddq = false;
   auto sys = [&](const Eigen::VectorXd& q, const Eigen::VectorXd& v, double, Eigen::VectorXd& ddq) {
     if (kinematics_current && &q == &s.q && &v == &s.v) {
       kinematics_current = false;  // the first evaluation only
-      ddq = detail::aba_with_current_kinematics(m, ws, scr.tau_total);
+      if (implicit_ddq)
+        ddq = ws.ddq;
+      else
+        ddq = detail::aba_with_current_kinematics(m, ws, scr.tau_total);
     } else {
       ddq = aba(m, ws, q, v, scr.tau_total);
     }
@@ -451,6 +477,31 @@ rollout_result rollout_impl(const model<Root>& m, const Actuator& act, C& ctrl,
       scr.tau_passive[i] = passive;
       scr.tau_total[i] = scr.tau[i] + passive;
     }
+    // Implicit joint damping (rollout_options::implicit_joint_damping): solve
+    // (M + dt diag(c)) ddq = tau_total - C with the dampers' coefficients c, and apply the dampers
+    // at the end of the step: tau -= c_actuator dt ddq, tau_passive -= c_limit dt ddq. Then
+    // M ddq = tau_total - C for the applied torques, and the integrator takes this ddq.
+    if (implicit_damping) {
+      if constexpr (actuator_with_joint_damping<Actuator, Root>)
+        act.joint_damping(m, std::as_const(s), Eigen::Ref<const Eigen::VectorXd>(scr.command),
+                          std::as_const(act_state),
+                          Eigen::Ref<Eigen::VectorXd>(scr.damping_actuator));
+      for (int j = 0; j < nj; ++j) {
+        const double c_limit = joint_limit_damping(m.dofs[j].limit, s.q[Root::nq + j]);
+        scr.damping_passive[j] = c_limit;
+        scr.armature[j] = dt * (scr.damping_actuator[j] + c_limit);
+      }
+      const Eigen::VectorXd& a =
+          detail::aba_with_current_kinematics(m, ws, scr.tau_total, scr.armature.data());
+      for (int j = 0; j < nj; ++j) {
+        const int i = Root::nv + j;
+        const double dv = dt * a[i];
+        scr.tau[i] -= scr.damping_actuator[j] * dv;
+        scr.tau_passive[i] -= scr.damping_passive[j] * dv;
+        scr.tau_total[i] = scr.tau[i] + scr.tau_passive[i];
+      }
+      implicit_ddq = true;
+    }
     // 6. objective and recorder
     view.t = t;
     view.step = k;
@@ -476,6 +527,7 @@ rollout_result rollout_impl(const model<Root>& m, const Actuator& act, C& ctrl,
     else
       integ.step(m, s, dt, sys);
     kinematics_current = false;
+    implicit_ddq = false;
     if constexpr (coupled) {
       // integrated above, with (q, v)
     } else if constexpr (actuator_with_advance<Actuator, Root>) {
