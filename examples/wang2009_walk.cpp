@@ -1,8 +1,9 @@
 // Wang, Fleet & Hertzmann 2009: optimize a 3D walking controller from Table 2's unstable
 // initialization with CMA-ES (Sec. 4.3: sigma 0.0025 on normalized parameters, default population,
 // stop after 300 iterations without improvement or 3000 iterations) on the objective of eq. 16,
-// evaluating 10 s rollouts (2400 Hz, kp 75000, kd 2000, mu 10) on every core it is given. A run
-// checkpoints every 10 iterations and continues from its checkpoint with --resume.
+// evaluating 10 s rollouts (2400 Hz, kp 75000, kd 2000, mu 10, joint dampers taken implicitly) on
+// every core it is given. A run checkpoints every 10 iterations and continues from its checkpoint
+// with --resume.
 //
 //   wang2009_walk [--shape stocky] [--speed V] [--step-length S] [--iterations N]
 //                 [--threads N] [--seed K] [--out DIR] [--resume] [--init FILE]
@@ -133,6 +134,10 @@ rollout_options simulation_options() {
   rollout_options o;    // 2400 Hz, 10 s
   o.contact.mu = 10.0;  // Sec. 4.2
   o.fall_height = 0.7;  // E_fail's: a rollout stops once the COM is that low
+  // Joint dampers by backward Euler: explicit ones diverge at the hips' gimbal lock (hip_y near
+  // -pi/2, a leg kicked up in a fall), which made ~45 % of the rollouts around Table 2 blow up
+  // (docs/reproductions/wang2009.md, "Damping").
+  o.implicit_joint_damping = true;
   return o;
 }
 
