@@ -9,10 +9,15 @@
 //                 [--threads N] [--seed K] [--out DIR] [--resume] [--init FILE]
 //                 [--check-seconds S]
 //   wang2009_walk --replay FILE [--check-seconds S] [--out DIR]
+//   wang2009_walk --simbicon [--check-seconds S] [--out DIR]     (the SIMBICON baseline)
+//
+// Every form takes the viewer flags (--html FILE, --filmstrip FILE, --csv FILE, ...;
+// examples/viewer_flags.hpp) for the check rollout.
 //
 // Writes DIR/wang2009_<shape>.controller.json (parameters with their names), .convergence.csv,
 // .checkpoint, .csv (the trajectory of the check rollout) and prints the objective's report on
 // stderr and a one-line JSON summary on stdout.
+#include <algorithm>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -23,9 +28,11 @@
 #include <string>
 #include <vector>
 
+#include "gaitsynth/controllers/fsm/simbicon.hpp"
 #include "gaitsynth/gaitsynth.hpp"
 #include "gaitsynth/io/csv.hpp"
 #include "gaitsynth/synthesis/wang2009_search_space.hpp"
+#include "viewer_flags.hpp"
 
 using namespace gaitsynth;
 namespace fs = std::filesystem;
@@ -41,7 +48,9 @@ struct cli {
   fs::path out = "out";
   bool resume = false;
   std::string init, replay;
+  bool simbicon = false;
   double check_seconds = 100.0;
+  viz_outputs viz;
 };
 
 [[noreturn]] void usage(const char* name) {
@@ -50,12 +59,15 @@ struct cli {
                "       [--seed K] [--out DIR] [--resume] [--init CONTROLLER.json]"
                " [--check-seconds S]\n"
                "       "
-            << name << " --replay CONTROLLER.json [--check-seconds S] [--out DIR]\n";
+            << name << " --replay CONTROLLER.json [--check-seconds S] [--out DIR]\n"
+            << "       " << name << " --simbicon [--check-seconds S] [--out DIR]\n"
+            << viewer_flags::help();
   std::exit(2);
 }
 
 cli parse(int argc, char** argv) {
   cli c;
+  c.viz = viewer_flags::extract(argc, argv);
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
     auto value = [&]() -> std::string {
@@ -84,6 +96,8 @@ cli parse(int argc, char** argv) {
       c.replay = value();
     else if (a == "--check-seconds")
       c.check_seconds = std::stod(value());
+    else if (a == "--simbicon")
+      c.simbicon = true;
     else
       usage(argv[0]);
   }
@@ -141,6 +155,60 @@ rollout_options simulation_options() {
   return o;
 }
 
+/// The views of a check rollout (viewer flags), titled.
+void write_views(const floating_model& m, const trajectory& tr, const cli& c,
+                 const std::string& title) {
+  if (!c.viz.any()) return;
+  viz_outputs v = c.viz;
+  v.html_options.title = title;
+  v.filmstrip.t_begin = 0.0;
+  v.filmstrip.t_end = std::min(3.0, tr.frames.back().t);
+  v.filmstrip.interval = 0.1;
+  v.filmstrip.title = title;
+  write_viz_outputs(m, tr, v, &std::cerr);
+}
+
+/// --simbicon: the baseline walk (controllers/fsm/simbicon.hpp) for check_seconds, scored and
+/// reported by eq. 16 like an optimized walker.
+int run_simbicon(const floating_model& m, const cli& c) {
+  const auto [kp, kd] = simbicon_walk_gains(m);
+  simbicon_controller ctrl(m, kp, kd);
+  const std::vector<double> p = simbicon_walk_parameters();
+  wang2009_objective_options oo;
+  oo.target_speed = c.speed;
+  oo.target_step_length = c.step_length;
+  const auto obj = wang2009_objective(m, oo);
+  rollout_options opt = simulation_options();
+  opt.implicit_joint_damping = false;  // SIMBICON's walk was set with explicit dampers
+  opt.initial_state = simbicon_start_state(m);
+  trajectory tr;
+  opt.record = &tr;
+  opt.record_every = 40;
+  opt.duration = c.check_seconds;
+  auto scratch = make_rollout_scratch(m);
+  rollout_policy_states<mixed_pd_actuator, simbicon_controller, wang2009_objective_type> states;
+  semi_implicit_euler integ;
+  const rollout_result r = rollout(m, mixed_pd_actuator{}, ctrl, obj, flat_terrain{}, integ,
+                                   std::span<const double>(p), opt, scratch, states);
+  const wang2009_breakdown rep = wang2009_report(obj, *states.objective, r, opt);
+  print_wang2009_report(std::cerr, rep);
+  fs::create_directories(c.out);
+  save_csv((c.out / ("simbicon_" + c.shape + ".csv")).string(), tr);
+  write_views(m, tr, c, "SIMBICON (Yin et al. 2007), " + c.shape);
+  nlohmann::json sum;
+  sum["controller"] = "simbicon";
+  sum["shape"] = c.shape;
+  sum["check_seconds"] = c.check_seconds;
+  sum["walked_seconds"] = r.time;
+  sum["fell"] = r.reason == stop_reason::fell;
+  sum["speed"] = rep.average_speed;
+  sum["step_length"] = rep.step_length;
+  sum["power_ratio"] = rep.power_ratio;
+  sum["e_power"] = rep.e_power;
+  std::cout << sum.dump() << std::endl;
+  return 0;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) try {
@@ -154,6 +222,7 @@ int main(int argc, char** argv) try {
     c.shape = nlohmann::json::parse(in).at("shape").get<std::string>();
   }
   const floating_model m = wang2009_humanoid(wang2009_preset(c.shape));
+  if (c.simbicon) return run_simbicon(m, c);
   wang2009_controller ctrl(m);
   std::vector<double> x0 = wang2009_table2_parameters(m, ctrl);
   if (!c.replay.empty() || !c.init.empty()) {
@@ -222,6 +291,7 @@ int main(int argc, char** argv) try {
   const wang2009_breakdown rep = wang2009_report(obj, *states.objective, r, check);
   print_wang2009_report(std::cerr, rep);
   save_csv(stem + ".csv", tr);
+  write_views(m, tr, c, "Wang et al. 2009, " + c.shape);
   nlohmann::json sum;
   sum["shape"] = c.shape;
   sum["cost_10s"] = best_cost;
