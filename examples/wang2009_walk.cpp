@@ -168,6 +168,20 @@ void write_views(const floating_model& m, const trajectory& tr, const cli& c,
   write_viz_outputs(m, tr, v, &std::cerr);
 }
 
+/// The one-line JSON summary's fields of a check rollout.
+nlohmann::json check_summary(const cli& c, const rollout_result& r, const wang2009_breakdown& rep) {
+  nlohmann::json sum;
+  sum["shape"] = c.shape;
+  sum["check_seconds"] = c.check_seconds;
+  sum["walked_seconds"] = r.time;
+  sum["fell"] = r.reason == stop_reason::fell;
+  sum["speed"] = rep.average_speed;
+  sum["step_length"] = rep.step_length;
+  sum["power_ratio"] = rep.power_ratio;
+  sum["e_power"] = rep.e_power;
+  return sum;
+}
+
 /// --simbicon: the baseline walk (controllers/fsm/simbicon.hpp) for check_seconds, scored and
 /// reported by eq. 16 like an optimized walker.
 int run_simbicon(const floating_model& m, const cli& c) {
@@ -195,16 +209,8 @@ int run_simbicon(const floating_model& m, const cli& c) {
   fs::create_directories(c.out);
   save_csv((c.out / ("simbicon_" + c.shape + ".csv")).string(), tr);
   write_views(m, tr, c, "SIMBICON (Yin et al. 2007), " + c.shape);
-  nlohmann::json sum;
+  nlohmann::json sum = check_summary(c, r, rep);
   sum["controller"] = "simbicon";
-  sum["shape"] = c.shape;
-  sum["check_seconds"] = c.check_seconds;
-  sum["walked_seconds"] = r.time;
-  sum["fell"] = r.reason == stop_reason::fell;
-  sum["speed"] = rep.average_speed;
-  sum["step_length"] = rep.step_length;
-  sum["power_ratio"] = rep.power_ratio;
-  sum["e_power"] = rep.e_power;
   std::cout << sum.dump() << std::endl;
   return 0;
 }
@@ -292,18 +298,10 @@ int main(int argc, char** argv) try {
   print_wang2009_report(std::cerr, rep);
   save_csv(stem + ".csv", tr);
   write_views(m, tr, c, "Wang et al. 2009, " + c.shape);
-  nlohmann::json sum;
-  sum["shape"] = c.shape;
+  nlohmann::json sum = check_summary(c, r, rep);
   sum["cost_10s"] = best_cost;
   sum["evaluations"] = res.evaluations;
   sum["iterations"] = res.iterations;
-  sum["check_seconds"] = c.check_seconds;
-  sum["walked_seconds"] = r.time;
-  sum["fell"] = r.reason == stop_reason::fell;
-  sum["speed"] = rep.average_speed;
-  sum["step_length"] = rep.step_length;
-  sum["power_ratio"] = rep.power_ratio;
-  sum["e_power"] = rep.e_power;
   std::cout << sum.dump() << std::endl;
   return 0;
 } catch (const std::exception& e) {
