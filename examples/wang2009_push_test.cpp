@@ -3,7 +3,10 @@
 // (rollout/push_test.hpp). Without arguments it tests the SIMBICON baseline
 // (controllers/fsm/simbicon.hpp) and prints its column next to the paper's.
 //
-//   wang2009_push_test [--resolution N] [--max-force N]
+//   wang2009_push_test [--resolution N] [--max-force N] [--from-yin]
+//
+// --from-yin tests Yin et al.'s walk as published (simbicon_yin2007_walk_parameters) instead of
+// the library's adjusted one.
 #include <cstdio>
 #include <cstdlib>
 #include <iostream>
@@ -17,21 +20,25 @@ using namespace gaitsynth;
 
 int main(int argc, char** argv) try {
   push_protocol proto;
-  for (int i = 1; i + 1 < argc; i += 2) {
+  bool from_yin = false;
+  for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
-    if (a == "--resolution")
-      proto.resolution = std::stod(argv[i + 1]);
-    else if (a == "--max-force")
-      proto.max_force = std::stod(argv[i + 1]);
+    if (a == "--from-yin")
+      from_yin = true;
+    else if (a == "--resolution" && i + 1 < argc)
+      proto.resolution = std::stod(argv[++i]);
+    else if (a == "--max-force" && i + 1 < argc)
+      proto.max_force = std::stod(argv[++i]);
     else {
-      std::cerr << "usage: " << argv[0] << " [--resolution N] [--max-force N]\n";
+      std::cerr << "usage: " << argv[0] << " [--resolution N] [--max-force N] [--from-yin]\n";
       return 2;
     }
   }
   const floating_model m = wang2009_humanoid();
   const auto [kp, kd] = simbicon_walk_gains(m);
   const simbicon_controller c(m, kp, kd);
-  const std::vector<double> p = simbicon_walk_parameters();
+  const std::vector<double> p =
+      from_yin ? simbicon_yin2007_walk_parameters() : simbicon_walk_parameters();
   rollout_options opt;
   opt.contact.mu = 10.0;  // Wang et al. 2009 Sec. 4.2
   opt.fall_height = 0.7;  // E_fail's height

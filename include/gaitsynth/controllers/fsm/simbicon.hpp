@@ -165,7 +165,8 @@ inline std::vector<double> simbicon_yin2007_walk_parameters() {
 /// examples/wang2009_simbicon_tune.cpp (a seeded random search on the Table 1 push forces; its
 /// output is copied here).
 inline std::vector<double> simbicon_walk_parameters() {
-  // Search iteration 58 (score 1250; forces 75, 100, 175, 125, 150, 75, 175, 75 N at 25 N steps).
+  // Search iteration 58 (scored 1250 in that run's build). Table 1 with these values, 25 N steps,
+  // Release build (wang2009_push_test --resolution 25): 75, 100, 150, 75, 150, 125, 200, 100 N.
   return {0.2413,  0.0000, 0.1663,  0.0552,  0.2847, 0.0310, -0.4268, 1.1461,
           -0.6238, 0.1019, -0.0431, 0.3000,  1.6133, 0.0059, 0.1517,  0.2072,
           -0.0134, 0.2907, -0.0545, -0.3108, 0.0996, -0.1131};
