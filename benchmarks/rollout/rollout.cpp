@@ -40,6 +40,15 @@ rollout_options standing(const Model& m, double duration) {
   return o;
 }
 
+/// real_time_factor (simulated seconds per wall second) and us_per_step of rollouts of `seconds`
+/// each that took `steps` physics steps in all.
+void set_rollout_counters(benchmark::State& state, double seconds, std::int64_t steps) {
+  state.counters["real_time_factor"] = benchmark::Counter(
+      seconds * static_cast<double>(state.iterations()), benchmark::Counter::kIsRate);
+  state.counters["us_per_step"] = benchmark::Counter(
+      1e-6 * static_cast<double>(steps), benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
+}
+
 /// A 10 s standing rollout per iteration.
 template <class Model, class Integrator>
 void bench_rollout(benchmark::State& state, const Model& m) {
@@ -58,10 +67,7 @@ void bench_rollout(benchmark::State& state, const Model& m) {
     steps += r.steps;
     benchmark::DoNotOptimize(r.cost);
   }
-  state.counters["real_time_factor"] = benchmark::Counter(
-      10.0 * static_cast<double>(state.iterations()), benchmark::Counter::kIsRate);
-  state.counters["us_per_step"] = benchmark::Counter(
-      1e-6 * static_cast<double>(steps), benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
+  set_rollout_counters(state, 10.0, steps);
   state.counters["contact_points"] = static_cast<double>(m.contact_points.size());
 }
 
@@ -104,10 +110,7 @@ void BM_Rollout_Humanoid3D_SimbiconWalk10s(benchmark::State& state) {
     steps += r.steps;
     benchmark::DoNotOptimize(r.cost);
   }
-  state.counters["real_time_factor"] = benchmark::Counter(
-      10.0 * static_cast<double>(state.iterations()), benchmark::Counter::kIsRate);
-  state.counters["us_per_step"] = benchmark::Counter(
-      1e-6 * static_cast<double>(steps), benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
+  set_rollout_counters(state, 10.0, steps);
 }
 BENCHMARK(BM_Rollout_Humanoid3D_SimbiconWalk10s)->Unit(benchmark::kMillisecond)->MinTime(2.0);
 
