@@ -79,6 +79,7 @@
 #include "gaitsynth/rollout/problem_with_variants.hpp"
 #include "gaitsynth/rollout/recorder.hpp"
 #include "gaitsynth/rollout/result.hpp"
+#include "gaitsynth/rollout/start_perturbations.hpp"
 #include "gaitsynth/rollout/rollout.hpp"
 #include "gaitsynth/rollout/termination.hpp"
 #include "gaitsynth/rollout/trajectory.hpp"

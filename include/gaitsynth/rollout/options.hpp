@@ -18,6 +18,10 @@ struct rollout_options {
   /// Start state (q, v, t). Empty q: the model's neutral configuration placed on the terrain (its
   /// lowest contact point touching the ground), at rest, t = 0.
   sim_state initial_state;
+  /// Added to the start velocities after the controller has set its start state (empty: none;
+  /// else size nv). Perturbed starts of a controller whose parameters include its start state
+  /// (Wang et al. 2009): rollout/start_perturbations.hpp draws them.
+  Eigen::VectorXd initial_velocity_offset;
 
   /// Fall detection: stop when the COM is lower than the fall height above the terrain under it.
   bool detect_falls = true;

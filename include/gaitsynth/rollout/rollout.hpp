@@ -225,6 +225,12 @@ rollout_result rollout_impl(const model<Root>& m, const Actuator& act, C& ctrl,
     s.t = opt.initial_state.t;
   }
   if constexpr (controller_with_initial_state<C, Root>) ctrl.initial_state(m, s);
+  if (opt.initial_velocity_offset.size() > 0) {
+    check_size(opt.initial_velocity_offset.size(), m.nv(),
+               "rollout_options::initial_velocity_offset");
+    check_finite(opt.initial_velocity_offset, "rollout_options::initial_velocity_offset");
+    s.v += opt.initial_velocity_offset;
+  }
   normalize_configuration(m, s.q);
   const double t0 = s.t;
 
