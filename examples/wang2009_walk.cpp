@@ -7,6 +7,8 @@
 //
 //   wang2009_walk [--shape stocky] [--speed V] [--step-length S] [--iterations N]
 //                 [--threads N] [--seed K] [--out DIR] [--resume] [--init FILE]
+//                 (--init with --shape of another body carries the controller to it, gains
+//                 scaled by the weights: controllers/fsm/wang2009_shape_transfer.hpp)
 //                 [--check-seconds S] [--horizon S] [--sigma S]
 //                 [--robust-starts K] [--start-sigma S] [--robust-pushes K] [--push-force N]
 //   wang2009_walk --replay FILE [--check-seconds S] [--out DIR]
@@ -37,6 +39,7 @@
 #include <vector>
 
 #include "gaitsynth/controllers/fsm/simbicon.hpp"
+#include "gaitsynth/controllers/fsm/wang2009_shape_transfer.hpp"
 #include "gaitsynth/gaitsynth.hpp"
 #include "gaitsynth/io/csv.hpp"
 #include "gaitsynth/rollout/push_test.hpp"
@@ -51,6 +54,7 @@ namespace {
 
 struct cli {
   std::string shape = "stocky";
+  bool shape_given = false;  // --shape with --init: carry the controller to that shape
   std::optional<double> speed, step_length;
   long long iterations = 3000;
   unsigned threads = 2;
@@ -91,9 +95,10 @@ cli parse(int argc, char** argv) {
       if (i + 1 >= argc) usage(argv[0]);
       return argv[++i];
     };
-    if (a == "--shape")
+    if (a == "--shape") {
       c.shape = value();
-    else if (a == "--speed")
+      c.shape_given = true;
+    } else if (a == "--speed")
       c.speed = std::stod(value());
     else if (a == "--step-length")
       c.step_length = std::stod(value());
@@ -254,20 +259,25 @@ int run_simbicon(const floating_model& m, const cli& c) {
 int main(int argc, char** argv) try {
   cli c = parse(argc, argv);
   std::optional<saved> from;
+  std::string from_shape;
   if (!c.replay.empty() || !c.init.empty()) {
     const std::string file = c.replay.empty() ? c.init : c.replay;
     // The file names its shape; a controller for it is needed to read the parameter names.
     std::ifstream in(file);
     check_argument(in.good(), "cannot open controller file '", file, "'");
-    c.shape = nlohmann::json::parse(in).at("shape").get<std::string>();
+    from_shape = nlohmann::json::parse(in).at("shape").get<std::string>();
+    if (!c.replay.empty() || !c.shape_given) c.shape = from_shape;
   }
   const floating_model m = wang2009_humanoid(wang2009_preset(c.shape));
   if (c.simbicon) return run_simbicon(m, c);
   wang2009_controller ctrl(m);
   std::vector<double> x0 = wang2009_table2_parameters(m, ctrl);
   if (!c.replay.empty() || !c.init.empty()) {
-    from = load(c.replay.empty() ? c.init : c.replay, ctrl);
-    x0 = from->params;
+    const floating_model fm = wang2009_humanoid(wang2009_preset(from_shape));
+    const wang2009_controller fc(fm);
+    from = load(c.replay.empty() ? c.init : c.replay, fc);
+    // --init of another shape: gains scaled by the weights, as Table 2 is (Sec. 4.3).
+    x0 = wang2009_transfer_parameters(fm, fc, from->params, m, ctrl);
     if (!c.speed) c.speed = from->speed;
     if (!c.step_length) c.step_length = from->step_length;
   }
