@@ -38,6 +38,7 @@
 #include <string>
 #include <vector>
 
+#include "gaitsynth/analysis/ankle_push_off.hpp"
 #include "gaitsynth/controllers/fsm/simbicon.hpp"
 #include "gaitsynth/controllers/fsm/wang2009_shape_transfer.hpp"
 #include "gaitsynth/gaitsynth.hpp"
@@ -221,6 +222,23 @@ nlohmann::json check_summary(const cli& c, const rollout_result& r, const wang20
   return sum;
 }
 
+/// Ankle push-off of both feet over the check rollout (analysis/ankle_push_off.hpp): the share of
+/// stances whose ankle power peaks in late stance, where it peaks, how high.
+nlohmann::json push_off_summary(const floating_model& m, const trajectory& tr) {
+  nlohmann::json j;
+  for (const char* side : {"l", "r"}) {
+    const std::string s = side;
+    const ankle_push_off_report a = ankle_push_off(m, tr, s + "ankle_y", s + "foot", s + "toes");
+    j[s] = {{"stances", a.stances.size()},
+            {"late_peak_fraction", a.late_peak_fraction},
+            {"mean_peak_fraction", a.mean_peak_fraction},
+            {"mean_peak_power", a.mean_peak_power},
+            {"mean_curve_peak_fraction", a.mean_curve_peak_fraction},
+            {"mean_power_by_tenth", a.mean_power_by_tenth}};
+  }
+  return j;
+}
+
 /// --simbicon: the baseline walk (controllers/fsm/simbicon.hpp) for check_seconds, scored and
 /// reported by eq. 16 like an optimized walker.
 int run_simbicon(const floating_model& m, const cli& c) {
@@ -250,6 +268,7 @@ int run_simbicon(const floating_model& m, const cli& c) {
   write_views(m, tr, c, "SIMBICON (Yin et al. 2007), " + c.shape);
   nlohmann::json sum = check_summary(c, r, rep);
   sum["controller"] = "simbicon";
+  sum["ankle_push_off"] = push_off_summary(m, tr);
   std::cout << sum.dump() << std::endl;
   return 0;
 }
@@ -371,6 +390,7 @@ int main(int argc, char** argv) try {
   write_views(m, tr, c, "Wang et al. 2009, " + c.shape);
   nlohmann::json sum = check_summary(c, r, rep);
   sum["cost"] = best_cost;
+  sum["ankle_push_off"] = push_off_summary(m, tr);
   sum["horizon"] = c.horizon;
   sum["evaluations"] = res.evaluations;
   sum["iterations"] = res.iterations;
