@@ -40,6 +40,7 @@
 
 #include "gaitsynth/analysis/ankle_push_off.hpp"
 #include "gaitsynth/controllers/fsm/simbicon.hpp"
+#include "gaitsynth/controllers/fsm/wang2009_json.hpp"
 #include "gaitsynth/controllers/fsm/wang2009_shape_transfer.hpp"
 #include "gaitsynth/gaitsynth.hpp"
 #include "gaitsynth/io/csv.hpp"
@@ -144,44 +145,16 @@ cli parse(int argc, char** argv) {
   return c;
 }
 
-/// The saved controller: shape, objective targets, parameters by name.
-struct saved {
-  std::string shape;
-  std::optional<double> speed, step_length;
-  std::vector<double> params;
-};
-
-saved load(const std::string& path, const wang2009_controller& c) {
-  std::ifstream in(path);
-  check_argument(in.good(), "cannot open controller file '", path, "'");
-  const nlohmann::json j = nlohmann::json::parse(in);
-  saved s;
-  s.shape = j.at("shape").get<std::string>();
-  if (j.contains("target_speed") && !j["target_speed"].is_null()) s.speed = j["target_speed"];
-  if (j.contains("target_step_length") && !j["target_step_length"].is_null())
-    s.step_length = j["target_step_length"];
-  const auto names = c.parameter_names();
-  for (const auto& n : names) {
-    check_argument(j.at("parameters").contains(n), path, ": parameter '", n, "' is missing");
-    s.params.push_back(j["parameters"][n].get<double>());
-  }
-  return s;
-}
-
+/// Writes the controller with the run's shape and targets.
 void save(const fs::path& path, const cli& c, const wang2009_controller& ctrl,
           const Eigen::VectorXd& x, double cost) {
-  nlohmann::json j;
-  j["paper"] = "Wang, Fleet & Hertzmann 2009";
-  j["shape"] = c.shape;
-  j["target_speed"] = c.speed ? nlohmann::json(*c.speed) : nlohmann::json(nullptr);
-  j["target_step_length"] =
-      c.step_length ? nlohmann::json(*c.step_length) : nlohmann::json(nullptr);
-  j["cost"] = cost;
-  nlohmann::json p = nlohmann::json::object();
-  const auto names = ctrl.parameter_names();
-  for (std::size_t i = 0; i < names.size(); ++i) p[names[i]] = x[static_cast<Eigen::Index>(i)];
-  j["parameters"] = p;
-  std::ofstream(path) << j.dump(1) << "\n";
+  wang2009_saved_controller s;
+  s.shape = c.shape;
+  s.target_speed = c.speed;
+  s.target_step_length = c.step_length;
+  s.cost = cost;
+  s.parameters.assign(x.data(), x.data() + x.size());
+  save_wang2009_controller(path.string(), ctrl, s);
 }
 
 rollout_options simulation_options() {
@@ -277,14 +250,10 @@ int run_simbicon(const floating_model& m, const cli& c) {
 
 int main(int argc, char** argv) try {
   cli c = parse(argc, argv);
-  std::optional<saved> from;
   std::string from_shape;
   if (!c.replay.empty() || !c.init.empty()) {
-    const std::string file = c.replay.empty() ? c.init : c.replay;
     // The file names its shape; a controller for it is needed to read the parameter names.
-    std::ifstream in(file);
-    check_argument(in.good(), "cannot open controller file '", file, "'");
-    from_shape = nlohmann::json::parse(in).at("shape").get<std::string>();
+    from_shape = wang2009_saved_shape(c.replay.empty() ? c.init : c.replay);
     if (!c.replay.empty() || !c.shape_given) c.shape = from_shape;
   }
   const floating_model m = wang2009_humanoid(wang2009_preset(c.shape));
@@ -294,11 +263,12 @@ int main(int argc, char** argv) try {
   if (!c.replay.empty() || !c.init.empty()) {
     const floating_model fm = wang2009_humanoid(wang2009_preset(from_shape));
     const wang2009_controller fc(fm);
-    from = load(c.replay.empty() ? c.init : c.replay, fc);
+    const wang2009_saved_controller from =
+        load_wang2009_controller(c.replay.empty() ? c.init : c.replay, fc);
     // --init of another shape: gains scaled by the weights, as Table 2 is (Sec. 4.3).
-    x0 = wang2009_transfer_parameters(fm, fc, from->params, m, ctrl);
-    if (!c.speed) c.speed = from->speed;
-    if (!c.step_length) c.step_length = from->step_length;
+    x0 = wang2009_transfer_parameters(fm, fc, from.parameters, m, ctrl);
+    if (!c.speed) c.speed = from.target_speed;
+    if (!c.step_length) c.step_length = from.target_step_length;
   }
   ctrl.bind(x0);
   wang2009_objective_options oo;
