@@ -11,6 +11,7 @@
 //                 scaled by the weights: controllers/fsm/wang2009_shape_transfer.hpp)
 //                 [--check-seconds S] [--horizon S] [--sigma S]
 //                 [--robust-starts K] [--start-sigma S] [--robust-pushes K] [--push-force N]
+//                 [--without TERM]...   (E_ratio, E_ang, ...: the term's weight set to 0)
 //   wang2009_walk --replay FILE [--check-seconds S] [--out DIR]
 //   wang2009_walk --simbicon [--check-seconds S] [--out DIR]     (the SIMBICON baseline)
 //
@@ -69,8 +70,10 @@ struct cli {
   double horizon = 10.0;  // s, Sec. 4.3
   double sigma = 0.0025;  // Sec. 4.3, on parameters normalized to [0, 1]
   int robust_starts = 0, robust_pushes = 0;
-  double start_sigma = 0.05;  // rad/s, the claim tests' perturbation
-  double push_force = 100.0;  // N
+  double start_sigma = 0.05;         // rad/s, the claim tests' perturbation
+  double push_force = 100.0;         // N
+  std::vector<std::string> without;  // terms of eq. 16 left out (weight 0): Figs. 3 and 4
+  std::string command;               // the command line, kept in the saved controller
   viz_outputs viz;
 };
 
@@ -81,6 +84,7 @@ struct cli {
                " [--check-seconds S]\n"
                "       [--horizon S] [--sigma S] [--robust-starts K] [--start-sigma S]"
                " [--robust-pushes K] [--push-force N]\n"
+               "       [--without TERM]...\n"
                "       "
             << name << " --replay CONTROLLER.json [--check-seconds S] [--out DIR]\n"
             << "       " << name << " --simbicon [--check-seconds S] [--out DIR]\n"
@@ -90,6 +94,7 @@ struct cli {
 
 cli parse(int argc, char** argv) {
   cli c;
+  for (int i = 0; i < argc; ++i) c.command += (i ? " " : "") + std::string(argv[i]);
   c.viz = viewer_flags::extract(argc, argv);
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
@@ -134,6 +139,8 @@ cli parse(int argc, char** argv) {
       c.robust_pushes = std::stoi(value());
     else if (a == "--push-force")
       c.push_force = std::stod(value());
+    else if (a == "--without")
+      c.without.push_back(value());
     else
       usage(argv[0]);
   }
@@ -154,6 +161,8 @@ void save(const fs::path& path, const cli& c, const wang2009_controller& ctrl,
   s.target_step_length = c.step_length;
   s.cost = cost;
   s.parameters.assign(x.data(), x.data() + x.size());
+  s.info["command"] = c.command;
+  s.info["without"] = c.without;
   save_wang2009_controller(path.string(), ctrl, s);
 }
 
@@ -274,6 +283,19 @@ int main(int argc, char** argv) try {
   wang2009_objective_options oo;
   oo.target_speed = c.speed;
   oo.target_step_length = c.step_length;
+  for (const std::string& t : c.without) {
+    const auto k = std::find(wang2009_term_names.begin(), wang2009_term_names.end(), t);
+    check_argument(k != wang2009_term_names.end(), "--without: unknown term '", t,
+                   "' (E_user, E_vel, E_land, E_fail, E_sym, E_ang, E_head, E_power, E_ratio)");
+    double* w[] = {&oo.weights.user, &oo.weights.vel, &oo.weights.land,
+                   &oo.weights.fail, &oo.weights.sym, &oo.weights.ang,
+                   &oo.weights.head, nullptr,         &oo.weights.ratio};
+    const auto i = static_cast<std::size_t>(k - wang2009_term_names.begin());
+    if (w[i])
+      *w[i] = 0.0;
+    else
+      oo.weights.power = 0.0;
+  }
   if (c.shape == "long_arm" || c.shape == "long arm") oo.fail_height = 0.4;  // Sec. 4.1
   rollout_options opt = simulation_options();
   opt.initial_state = make_state(m);  // sized, so the controller writes its start in place
@@ -362,6 +384,7 @@ int main(int argc, char** argv) try {
   sum["cost"] = best_cost;
   sum["ankle_push_off"] = push_off_summary(m, tr);
   sum["horizon"] = c.horizon;
+  sum["without"] = c.without;
   sum["evaluations"] = res.evaluations;
   sum["iterations"] = res.iterations;
   // The claim tests' robustness check: 10 starts with joint velocities perturbed by a seeded
