@@ -48,6 +48,7 @@
 #include "gaitsynth/rollout/push_test.hpp"
 #include "gaitsynth/rollout/start_perturbations.hpp"
 #include "gaitsynth/synthesis/wang2009_search_space.hpp"
+#include "gaitsynth/synthesis/wang2009_simulation.hpp"
 #include "viewer_flags.hpp"
 
 using namespace gaitsynth;
@@ -166,17 +167,6 @@ void save(const fs::path& path, const cli& c, const wang2009_controller& ctrl,
   save_wang2009_controller(path.string(), ctrl, s);
 }
 
-rollout_options simulation_options() {
-  rollout_options o;    // 2400 Hz, 10 s
-  o.contact.mu = 10.0;  // Sec. 4.2
-  o.fall_height = 0.7;  // E_fail's: a rollout stops once the COM is that low
-  // Joint dampers by backward Euler: explicit ones diverge at the hips' gimbal lock (hip_y near
-  // -pi/2, a leg kicked up in a fall), which made ~45 % of the rollouts around Table 2 blow up
-  // (docs/reproductions/wang2009.md, "Damping").
-  o.implicit_joint_damping = true;
-  return o;
-}
-
 /// The views of a check rollout (viewer flags), titled.
 void write_views(const floating_model& m, const trajectory& tr, const cli& c,
                  const std::string& title) {
@@ -231,7 +221,7 @@ int run_simbicon(const floating_model& m, const cli& c) {
   oo.target_speed = c.speed;
   oo.target_step_length = c.step_length;
   const auto obj = wang2009_objective(m, oo);
-  rollout_options opt = simulation_options();
+  rollout_options opt = wang2009_rollout_options(m);
   opt.implicit_joint_damping = false;  // SIMBICON's walk was set with explicit dampers
   opt.initial_state = simbicon_start_state(m);
   trajectory tr;
@@ -296,10 +286,8 @@ int main(int argc, char** argv) try {
     else
       oo.weights.power = 0.0;
   }
-  if (c.shape == "long_arm" || c.shape == "long arm") oo.fail_height = 0.4;  // Sec. 4.1
-  rollout_options opt = simulation_options();
-  opt.initial_state = make_state(m);  // sized, so the controller writes its start in place
-  opt.fall_height = oo.fail_height;
+  oo.fail_height = wang2009_fail_height(c.shape);  // Sec. 4.1
+  rollout_options opt = wang2009_rollout_options(m, oo.fail_height);
   const auto obj = wang2009_objective(m, oo);
   const rollout_problem prob{
       m, mixed_pd_actuator{}, ctrl, obj, flat_terrain{}, semi_implicit_euler{}, opt};
