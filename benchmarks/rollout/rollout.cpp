@@ -13,6 +13,9 @@
 #include "gaitsynth/actuators/pd.hpp"
 #include "gaitsynth/contact/flat_terrain.hpp"
 #include "gaitsynth/controllers/fsm/simbicon.hpp"
+#if __has_include(<nlohmann/json.hpp>)
+#include "gaitsynth/controllers/fsm/wang2009_json.hpp"
+#endif
 #include "gaitsynth/controllers/pose_hold.hpp"
 #include "gaitsynth/dynamics/aba.hpp"
 #include "gaitsynth/dynamics/center_of_mass.hpp"
@@ -24,6 +27,7 @@
 #include "gaitsynth/objectives/distance.hpp"
 #include "gaitsynth/objectives/wang2009/wang2009_objective.hpp"
 #include "gaitsynth/rollout/rollout.hpp"
+#include "gaitsynth/synthesis/wang2009_simulation.hpp"
 
 namespace {
 
@@ -113,6 +117,36 @@ void BM_Rollout_Humanoid3D_SimbiconWalk10s(benchmark::State& state) {
   set_rollout_counters(state, 10.0, steps);
 }
 BENCHMARK(BM_Rollout_Humanoid3D_SimbiconWalk10s)->Unit(benchmark::kMillisecond)->MinTime(2.0);
+
+#if __has_include(<nlohmann/json.hpp>)
+/// A 10 s walk per iteration of the optimized Wang 2009 walker (data/wang2009/walkers/, the
+/// stocky walker from Table 2) with the whole objective of eq. 16 and the settings of its
+/// optimization (synthesis/wang2009_simulation.hpp: mu = 10, implicit joint dampers): one
+/// evaluation of a Wang 2009 optimization near its optimum.
+void BM_Rollout_Humanoid3D_Walk10s(benchmark::State& state) {
+  const std::string path =
+      std::string(GAITSYNTH_SOURCE_DIR) + "/data/wang2009/walkers/stocky_table2.controller.json";
+  const floating_model m = wang2009_humanoid(wang2009_preset(wang2009_saved_shape(path)));
+  wang2009_controller ctrl(m);
+  const std::vector<double> p = load_wang2009_controller(path, ctrl).parameters;
+  ctrl.bind(p);
+  const auto obj = wang2009_objective(m);
+  const rollout_options opt = wang2009_rollout_options(m);
+  auto scr = make_rollout_scratch(m);
+  rollout_policy_states<mixed_pd_actuator, wang2009_controller, wang2009_objective_type> states;
+  semi_implicit_euler integ;
+  std::int64_t steps = 0;
+  for (auto _ : state) {
+    const rollout_result r = rollout(m, mixed_pd_actuator{}, ctrl, obj, flat_terrain{}, integ,
+                                     std::span<const double>(p), opt, scr, states);
+    if (r.reason != stop_reason::horizon) state.SkipWithError("the walker did not walk 10 s");
+    steps += r.steps;
+    benchmark::DoNotOptimize(r.cost);
+  }
+  set_rollout_counters(state, 10.0, steps);
+}
+BENCHMARK(BM_Rollout_Humanoid3D_Walk10s)->Unit(benchmark::kMillisecond)->MinTime(2.0);
+#endif
 
 /// One full step of the rollout's order, written out with the public algorithms: kinematics, COM,
 /// penalty contact at all points (16 sole points touching while standing), PD torques, passive
