@@ -177,6 +177,14 @@ void write_views(const floating_model& m, const trajectory& tr, const cli& c,
   v.filmstrip.t_end = std::min(3.0, tr.frames.back().t);
   v.filmstrip.interval = 0.1;
   v.filmstrip.title = title;
+  // Fig. 6's curves: the left thigh's and foot's world pitch and the left knee, over the cycles
+  // from left heel strike to left heel strike.
+  using kind = gait_channel::kind;
+  v.gait.cycles.channels = {
+      {.type = kind::segment_pitch, .label = "thigh orientation", .name = "lthigh"},
+      {.type = kind::joint_angle, .label = "knee angle", .name = "lknee"},
+      {.type = kind::segment_pitch, .label = "foot orientation", .name = "lfoot"}};
+  v.gait.title = title + ": gait cycles (Fig. 6)";
   write_viz_outputs(m, tr, v, &std::cerr);
 }
 

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "gaitsynth/models/wang2009.hpp"
 #include "gaitsynth/viz/gait_cycles.hpp"
 #include "viz/viz_fixture.hpp"
 
@@ -17,6 +18,11 @@ TEST_CASE("heel strikes of the synthetic walk are one period apart", "[viz][gait
   const int lfoot = default_foot_body(traj, "l");
   REQUIRE(lfoot == m.body_index("lfoot"));
   CHECK(default_foot_body(traj, "r") == m.body_index("rfoot"));
+  CHECK(default_foot_body(m, "l") == lfoot);
+  // With contact points on thighs, knees and hands (for falls), only soles and toes make a foot.
+  const auto h = wang2009_humanoid();
+  CHECK(default_foot_body(h, "l") == h.body_index("lfoot"));
+  CHECK(default_foot_body(h, "r") == h.body_index("rfoot"));
   const auto strikes = heel_strike_times(traj, lfoot, 0.25);
   REQUIRE(strikes.size() >= 4);
   for (std::size_t k = 1; k < strikes.size(); ++k)

@@ -42,7 +42,7 @@ struct gait_cycle_options {
   /// Prefix of the analysed side's names (builder's mirror prefix, "l" by default).
   std::string side = "l";
   /// Body whose contact points (and its descendants', e.g. toes) define heel strike; empty: the
-  /// first body with contact points whose name starts with `side` (else the first with any).
+  /// first body with sole or toe points whose name starts with `side` (else the first with any).
   std::string foot;
   /// Cycle start times (s) to use instead of detected heel strikes (ascending).
   std::vector<double> cycle_starts;
@@ -108,6 +108,24 @@ inline int default_foot_body(const trajectory& traj, const std::string& side) {
     if (!has) continue;
     if (any < 0) any = static_cast<int>(b);
     if (traj.body_names[b].rfind(side, 0) == 0) return static_cast<int>(b);
+  }
+  return any;
+}
+
+/// The default foot of `side` for model m: the first body with sole or toe contact points whose
+/// name starts with `side` (else the first with any). Points of other kinds do not make a foot:
+/// the 3D humanoids also carry points on knees, hands and pelvis, for falls.
+template <root_joint Root>
+int default_foot_body(const model<Root>& m, const std::string& side) {
+  int any = -1;
+  for (int b = 0; b < m.num_bodies(); ++b) {
+    bool has = false;
+    for (const contact_point& cp : m.contact_points)
+      has = has || (cp.body == b &&
+                    (cp.role == contact_point::kind::sole || cp.role == contact_point::kind::toe));
+    if (!has) continue;
+    if (any < 0) any = b;
+    if (m.bodies[static_cast<std::size_t>(b)].name.rfind(side, 0) == 0) return b;
   }
   return any;
 }
@@ -219,7 +237,7 @@ gait_cycle_data gait_cycles(const model<Root>& m, const trajectory& traj,
     if (!opt.foot.empty()) {
       foot = m.body_index(opt.foot);
     } else {
-      foot = default_foot_body(traj, opt.side);
+      foot = default_foot_body(m, opt.side);
     }
     if (foot >= 0) d.foot = m.bodies[foot].name;
     d.cycle_starts = heel_strike_times(traj, foot, opt.min_cycle_duration);

@@ -58,7 +58,7 @@ std::vector<double> player_cycles(const model<Root>& m, const trajectory& traj,
     names_only.contact_bodies.clear();
     for (const auto& c : m.contact_points) names_only.contact_bodies.push_back(c.body);
   }
-  foot = !opt.foot.empty() ? m.body_index(opt.foot) : default_foot_body(names_only, opt.side);
+  foot = !opt.foot.empty() ? m.body_index(opt.foot) : default_foot_body(m, opt.side);
   std::vector<double> cycles = opt.cycle_starts;
   if (cycles.empty() && foot >= 0) {
     names_only.frames.reserve(traj.frames.size());
