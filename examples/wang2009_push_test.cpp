@@ -4,23 +4,59 @@
 // (controllers/fsm/simbicon.hpp) and prints its column next to the paper's.
 //
 //   wang2009_push_test [--resolution N] [--max-force N] [--from-yin]
+//   wang2009_push_test --controller FILE [--paper COLUMN] [--resolution N] [--max-force N]
 //
 // --from-yin tests Yin et al.'s walk as published (simbicon_yin2007_walk_parameters) instead of
-// the library's adjusted one.
+// the library's adjusted one. --controller tests an optimized Wang 2009 walker saved by
+// wang2009_walk, with the settings of its optimization (synthesis/wang2009_simulation.hpp), next
+// to Table 1's column COLUMN (short, overweight, tall, short2, stocky; default: SIMBICON's).
+#include <array>
 #include <cstdio>
 #include <cstdlib>
 #include <iostream>
 #include <string>
 
 #include "gaitsynth/controllers/fsm/simbicon.hpp"
+#include "gaitsynth/controllers/fsm/wang2009_json.hpp"
 #include "gaitsynth/gaitsynth.hpp"
 #include "gaitsynth/rollout/push_test.hpp"
+#include "gaitsynth/synthesis/wang2009_simulation.hpp"
 
 using namespace gaitsynth;
+
+namespace {
+
+/// Table 1's columns (N).
+std::array<double, 8> paper_column(const std::string& name) {
+  if (name == "short") return {75, 75, 100, 50, 60, 40, 100, 75};
+  if (name == "overweight") return {1, 1, 25, 50, 75, 40, 20, 1};
+  if (name == "tall") return {20, 20, 200, 70, 120, 70, 200, 20};
+  if (name == "short2") return {10, 10, 50, 40, 75, 40, 75, 10};
+  if (name == "stocky") return {50, 65, 125, 75, 50, 50, 125, 50};
+  check_argument(name == "simbicon", "--paper: unknown column '", name,
+                 "' (short, overweight, tall, short2, stocky, simbicon)");
+  return {225, 150, 250, 100, 120, 100, 275, 125};
+}
+
+/// Prints the largest force per direction for the walker `test(direction)` next to the column.
+template <class Test>
+void print_table(const std::string& column, Test&& test) {
+  const std::array<double, 8> paper = paper_column(column);
+  std::printf("direction  max force (N)  paper %s (N)\n", column.c_str());
+  for (int k = 0; k < 8; ++k) {
+    const vec3& d = table1_directions()[static_cast<std::size_t>(k)];
+    std::printf("(%2.0f,%2.0f)    %8.0f       %8.0f\n", d.x(), d.y(), test(d),
+                paper[static_cast<std::size_t>(k)]);
+    std::fflush(stdout);
+  }
+}
+
+}  // namespace
 
 int main(int argc, char** argv) try {
   push_protocol proto;
   bool from_yin = false;
+  std::string controller, column;
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
     if (a == "--from-yin")
@@ -29,10 +65,32 @@ int main(int argc, char** argv) try {
       proto.resolution = std::stod(argv[++i]);
     else if (a == "--max-force" && i + 1 < argc)
       proto.max_force = std::stod(argv[++i]);
+    else if (a == "--controller" && i + 1 < argc)
+      controller = argv[++i];
+    else if (a == "--paper" && i + 1 < argc)
+      column = argv[++i];
     else {
-      std::cerr << "usage: " << argv[0] << " [--resolution N] [--max-force N] [--from-yin]\n";
+      std::cerr << "usage: " << argv[0]
+                << " [--resolution N] [--max-force N] [--from-yin]\n"
+                   "       "
+                << argv[0]
+                << " --controller FILE [--paper COLUMN] [--resolution N] [--max-force N]\n";
       return 2;
     }
+  }
+  if (!controller.empty()) {
+    const std::string shape = wang2009_saved_shape(controller);
+    const floating_model m = wang2009_humanoid(wang2009_preset(shape));
+    wang2009_controller c(m);
+    const std::vector<double> p = load_wang2009_controller(controller, c).parameters;
+    c.bind(p);
+    const rollout_options opt = wang2009_rollout_options(m, wang2009_fail_height(shape));
+    const int torso = m.body_index("torso");
+    print_table(column.empty() ? "simbicon" : column, [&](const vec3& d) {
+      return max_push_force(m, mixed_pd_actuator{}, c, flat_terrain{}, semi_implicit_euler{},
+                            std::span<const double>(p), opt, torso, d, proto);
+    });
+    return 0;
   }
   const floating_model m = wang2009_humanoid();
   const auto [kp, kd] = simbicon_walk_gains(m);
@@ -43,18 +101,11 @@ int main(int argc, char** argv) try {
   opt.contact.mu = 10.0;  // Wang et al. 2009 Sec. 4.2
   opt.fall_height = 0.7;  // E_fail's height
   opt.initial_state = simbicon_start_state(m);
-  // Table 1, "simbicon" column (Wang et al.'s implementation).
-  const std::array<double, 8> paper{225, 150, 250, 100, 120, 100, 275, 125};
   const int torso = m.body_index("torso");
-  std::printf("direction  max force (N)  paper SIMBICON (N)\n");
-  for (int k = 0; k < 8; ++k) {
-    const vec3& d = table1_directions()[k];
-    const double f =
-        max_push_force(m, mixed_pd_actuator{}, c, flat_terrain{}, semi_implicit_euler{},
-                       std::span<const double>(p), opt, torso, d, proto);
-    std::printf("(%2.0f,%2.0f)    %8.0f       %8.0f\n", d.x(), d.y(), f, paper[k]);
-    std::fflush(stdout);
-  }
+  print_table(column.empty() ? "simbicon" : column, [&](const vec3& d) {
+    return max_push_force(m, mixed_pd_actuator{}, c, flat_terrain{}, semi_implicit_euler{},
+                          std::span<const double>(p), opt, torso, d, proto);
+  });
   return 0;
 } catch (const std::exception& e) {
   std::cerr << "wang2009_push_test: " << e.what() << "\n";
