@@ -12,6 +12,7 @@
 //                 [--check-seconds S] [--horizon S] [--sigma S]
 //                 [--robust-starts K] [--start-sigma S] [--robust-pushes K] [--push-force N]
 //                 [--without TERM]...   (E_ratio, E_ang, ...: the term's weight set to 0)
+//                 [--slope DEG] [--mu MU]   (uphill along +x; ground friction, default 10)
 //   wang2009_walk --replay FILE [--check-seconds S] [--out DIR]
 //   wang2009_walk --simbicon [--check-seconds S] [--out DIR]     (the SIMBICON baseline)
 //
@@ -29,12 +30,14 @@
 // .checkpoint, .csv (the trajectory of the check rollout) and prints the objective's report on
 // stderr and a one-line JSON summary on stdout.
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
 #include <nlohmann/json.hpp>
+#include <numbers>
 #include <optional>
 #include <string>
 #include <vector>
@@ -74,7 +77,10 @@ struct cli {
   double start_sigma = 0.05;         // rad/s, the claim tests' perturbation
   double push_force = 100.0;         // N
   std::vector<std::string> without;  // terms of eq. 16 left out (weight 0): Figs. 3 and 4
-  std::string command;               // the command line, kept in the saved controller
+  double slope_deg = 0.0;            // uphill slope along +x (Sec. 5, "Changing terrain")
+  double mu = 10.0;                  // ground friction (Sec. 4.2; 0.8 and 0.3 in Sec. 5)
+  bool slope_given = false, mu_given = false;
+  std::string command;  // the command line, kept in the saved controller
   viz_outputs viz;
 };
 
@@ -85,7 +91,7 @@ struct cli {
                " [--check-seconds S]\n"
                "       [--horizon S] [--sigma S] [--robust-starts K] [--start-sigma S]"
                " [--robust-pushes K] [--push-force N]\n"
-               "       [--without TERM]...\n"
+               "       [--without TERM]... [--slope DEG] [--mu MU]\n"
                "       "
             << name << " --replay CONTROLLER.json [--check-seconds S] [--out DIR]\n"
             << "       " << name << " --simbicon [--check-seconds S] [--out DIR]\n"
@@ -142,7 +148,13 @@ cli parse(int argc, char** argv) {
       c.push_force = std::stod(value());
     else if (a == "--without")
       c.without.push_back(value());
-    else
+    else if (a == "--slope") {
+      c.slope_deg = std::stod(value());
+      c.slope_given = true;
+    } else if (a == "--mu") {
+      c.mu = std::stod(value());
+      c.mu_given = true;
+    } else
       usage(argv[0]);
   }
   check_argument(c.robust_starts >= 0, "--robust-starts must be >= 0, got ", c.robust_starts);
@@ -150,6 +162,9 @@ cli parse(int argc, char** argv) {
   check_argument(std::isfinite(c.push_force), "--push-force is not finite (", c.push_force, ")");
   check_argument(c.sigma > 0.0 && c.sigma <= 1.0, "--sigma must be in (0, 1], got ", c.sigma);
   check_argument(c.horizon > 0.0, "--horizon must be > 0 s, got ", c.horizon);
+  check_argument(std::abs(c.slope_deg) < 45.0, "--slope must be in (-45, 45) degrees, got ",
+                 c.slope_deg);
+  check_argument(c.mu > 0.0 && std::isfinite(c.mu), "--mu must be > 0, got ", c.mu);
   return c;
 }
 
@@ -164,6 +179,8 @@ void save(const fs::path& path, const cli& c, const wang2009_controller& ctrl,
   s.parameters.assign(x.data(), x.data() + x.size());
   s.info["command"] = c.command;
   s.info["without"] = c.without;
+  s.info["slope_deg"] = c.slope_deg;
+  s.info["mu"] = c.mu;
   save_wang2009_controller(path.string(), ctrl, s);
 }
 
@@ -253,52 +270,12 @@ int run_simbicon(const floating_model& m, const cli& c) {
   return 0;
 }
 
-}  // namespace
-
-int main(int argc, char** argv) try {
-  cli c = parse(argc, argv);
-  std::string from_shape;
-  if (!c.replay.empty() || !c.init.empty()) {
-    // The file names its shape; a controller for it is needed to read the parameter names.
-    from_shape = wang2009_saved_shape(c.replay.empty() ? c.init : c.replay);
-    if (!c.replay.empty() || !c.shape_given) c.shape = from_shape;
-  }
-  const floating_model m = wang2009_humanoid(wang2009_preset(c.shape));
-  if (c.simbicon) return run_simbicon(m, c);
-  wang2009_controller ctrl(m);
-  std::vector<double> x0 = wang2009_table2_parameters(m, ctrl);
-  if (!c.replay.empty() || !c.init.empty()) {
-    const floating_model fm = wang2009_humanoid(wang2009_preset(from_shape));
-    const wang2009_controller fc(fm);
-    const wang2009_saved_controller from =
-        load_wang2009_controller(c.replay.empty() ? c.init : c.replay, fc);
-    // --init of another shape: gains scaled by the weights, as Table 2 is (Sec. 4.3).
-    x0 = wang2009_transfer_parameters(fm, fc, from.parameters, m, ctrl);
-    if (!c.speed) c.speed = from.target_speed;
-    if (!c.step_length) c.step_length = from.target_step_length;
-  }
-  ctrl.bind(x0);
-  wang2009_objective_options oo;
-  oo.target_speed = c.speed;
-  oo.target_step_length = c.step_length;
-  for (const std::string& t : c.without) {
-    const auto k = std::find(wang2009_term_names.begin(), wang2009_term_names.end(), t);
-    check_argument(k != wang2009_term_names.end(), "--without: unknown term '", t,
-                   "' (E_user, E_vel, E_land, E_fail, E_sym, E_ang, E_head, E_power, E_ratio)");
-    double* w[] = {&oo.weights.user, &oo.weights.vel, &oo.weights.land,
-                   &oo.weights.fail, &oo.weights.sym, &oo.weights.ang,
-                   &oo.weights.head, nullptr,         &oo.weights.ratio};
-    const auto i = static_cast<std::size_t>(k - wang2009_term_names.begin());
-    if (w[i])
-      *w[i] = 0.0;
-    else
-      oo.weights.power = 0.0;
-  }
-  oo.fail_height = wang2009_fail_height(c.shape);  // Sec. 4.1
-  rollout_options opt = wang2009_rollout_options(m, oo.fail_height);
-  const auto obj = wang2009_objective(m, oo);
-  const rollout_problem prob{
-      m, mixed_pd_actuator{}, ctrl, obj, flat_terrain{}, semi_implicit_euler{}, opt};
+/// Optimizes (unless --replay) and checks the walker on `ground`; prints the summary.
+template <class Terrain>
+int optimize_and_check(const floating_model& m, const cli& c, const wang2009_controller& ctrl,
+                       const std::vector<double>& x0, const wang2009_objective_type& obj,
+                       const rollout_options& opt, const Terrain& ground) {
+  const rollout_problem prob{m, mixed_pd_actuator{}, ctrl, obj, ground, semi_implicit_euler{}, opt};
   fs::create_directories(c.out);
   const std::string stem = (c.out / ("wang2009_" + c.shape)).string();
 
@@ -369,7 +346,7 @@ int main(int argc, char** argv) try {
   rollout_policy_states<mixed_pd_actuator, wang2009_controller, wang2009_objective_type> states;
   semi_implicit_euler integ;
   const rollout_result r =
-      rollout(m, mixed_pd_actuator{}, cc, obj, flat_terrain{}, integ,
+      rollout(m, mixed_pd_actuator{}, cc, obj, ground, integ,
               std::span<const double>(best.data(), static_cast<std::size_t>(best.size())), check,
               scratch, states);
   const wang2009_breakdown rep = wang2009_report(obj, *states.objective, r, check);
@@ -381,6 +358,8 @@ int main(int argc, char** argv) try {
   sum["ankle_push_off"] = push_off_summary(m, tr);
   sum["horizon"] = c.horizon;
   sum["without"] = c.without;
+  sum["slope_deg"] = c.slope_deg;
+  sum["mu"] = c.mu;
   sum["evaluations"] = res.evaluations;
   sum["iterations"] = res.iterations;
   // The claim tests' robustness check: 10 starts with joint velocities perturbed by a seeded
@@ -393,7 +372,7 @@ int main(int argc, char** argv) try {
     wang2009_controller pc = prob.controller_with(best);
     rollout_policy_states<mixed_pd_actuator, wang2009_controller, wang2009_objective_type> ps;
     const rollout_result pr =
-        rollout(m, mixed_pd_actuator{}, pc, obj, flat_terrain{}, integ,
+        rollout(m, mixed_pd_actuator{}, pc, obj, ground, integ,
                 std::span<const double>(best.data(), static_cast<std::size_t>(best.size())), po,
                 scratch, ps);
     walked += pr.reason == stop_reason::horizon;
@@ -401,6 +380,60 @@ int main(int argc, char** argv) try {
   sum["perturbed_starts_walked"] = walked;
   std::cout << sum.dump() << std::endl;
   return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) try {
+  cli c = parse(argc, argv);
+  std::string from_shape;
+  if (!c.replay.empty() || !c.init.empty()) {
+    // The file names its shape; a controller for it is needed to read the parameter names.
+    from_shape = wang2009_saved_shape(c.replay.empty() ? c.init : c.replay);
+    if (!c.replay.empty() || !c.shape_given) c.shape = from_shape;
+  }
+  const floating_model m = wang2009_humanoid(wang2009_preset(c.shape));
+  if (c.simbicon) return run_simbicon(m, c);
+  wang2009_controller ctrl(m);
+  std::vector<double> x0 = wang2009_table2_parameters(m, ctrl);
+  if (!c.replay.empty() || !c.init.empty()) {
+    const floating_model fm = wang2009_humanoid(wang2009_preset(from_shape));
+    const wang2009_controller fc(fm);
+    const wang2009_saved_controller from =
+        load_wang2009_controller(c.replay.empty() ? c.init : c.replay, fc);
+    // --init of another shape: gains scaled by the weights, as Table 2 is (Sec. 4.3).
+    x0 = wang2009_transfer_parameters(fm, fc, from.parameters, m, ctrl);
+    if (!c.speed) c.speed = from.target_speed;
+    if (!c.step_length) c.step_length = from.target_step_length;
+    // A replay walks where the walker was optimized unless told otherwise.
+    if (!c.replay.empty() && !c.slope_given) c.slope_deg = from.info.value("slope_deg", 0.0);
+    if (!c.replay.empty() && !c.mu_given) c.mu = from.info.value("mu", 10.0);
+  }
+  ctrl.bind(x0);
+  wang2009_objective_options oo;
+  oo.target_speed = c.speed;
+  oo.target_step_length = c.step_length;
+  for (const std::string& t : c.without) {
+    const auto k = std::find(wang2009_term_names.begin(), wang2009_term_names.end(), t);
+    check_argument(k != wang2009_term_names.end(), "--without: unknown term '", t,
+                   "' (E_user, E_vel, E_land, E_fail, E_sym, E_ang, E_head, E_power, E_ratio)");
+    double* w[] = {&oo.weights.user, &oo.weights.vel, &oo.weights.land,
+                   &oo.weights.fail, &oo.weights.sym, &oo.weights.ang,
+                   &oo.weights.head, nullptr,         &oo.weights.ratio};
+    const auto i = static_cast<std::size_t>(k - wang2009_term_names.begin());
+    if (w[i])
+      *w[i] = 0.0;
+    else
+      oo.weights.power = 0.0;
+  }
+  oo.fail_height = wang2009_fail_height(c.shape);  // Sec. 4.1
+  rollout_options opt = wang2009_rollout_options(m, oo.fail_height);
+  opt.contact.mu = c.mu;
+  const auto obj = wang2009_objective(m, oo);
+  if (c.slope_deg != 0.0)
+    return optimize_and_check(m, c, ctrl, x0, obj, opt,
+                              slope_terrain(c.slope_deg * std::numbers::pi / 180.0));
+  return optimize_and_check(m, c, ctrl, x0, obj, opt, flat_terrain{});
 } catch (const std::exception& e) {
   std::cerr << "wang2009_walk: " << e.what() << "\n";
   return 1;
