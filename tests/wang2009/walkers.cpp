@@ -29,12 +29,12 @@ namespace {
 
 /// What docs/reproductions/wang2009.md reports for a walker.
 struct reported {
-  const char* file;             ///< under data/wang2009/walkers/
-  double speed;                 ///< m/s over the 100 s walk
-  double step_length;           ///< m
-  std::array<double, 3> ratio;  ///< hip, knee, ankle (eqs. 13-14)
-  int perturbed_walked;         ///< of the 10 perturbed starts, those that walk 100 s
-  bool push_off;                ///< both ankles' mean power curve peaks in late stance
+  const char* file;              ///< under data/wang2009/walkers/
+  double speed;                  ///< m/s over the 100 s walk
+  double step_length;            ///< m
+  std::array<double, 3> ratio;   ///< hip, knee, ankle (eqs. 13-14)
+  int perturbed_walked;          ///< of the 10 perturbed starts, those that walk 100 s
+  std::array<bool, 2> push_off;  ///< left, right: the ankle's mean power curve peaks in late stance
 };
 
 void check_walker(const reported& w) {
