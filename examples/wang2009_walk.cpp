@@ -202,6 +202,7 @@ void write_views(const floating_model& m, const trajectory& tr, const cli& c,
       {.type = kind::joint_angle, .label = "knee angle", .name = "lknee"},
       {.type = kind::segment_pitch, .label = "foot orientation", .name = "lfoot"}};
   v.gait.title = title + ": gait cycles (Fig. 6)";
+  v.gait.show_cycles = false;  // the mean and its band, as Fig. 6 draws them
   write_viz_outputs(m, tr, v, &std::cerr);
 }
 

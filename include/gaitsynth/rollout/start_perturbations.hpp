@@ -13,9 +13,9 @@
 #include <random>
 #include <vector>
 
+#include "gaitsynth/detail/standard_normal.hpp"
 #include "gaitsynth/error.hpp"
 #include "gaitsynth/model/model.hpp"
-#include "gaitsynth/optimizers/random.hpp"
 
 namespace gaitsynth {
 
