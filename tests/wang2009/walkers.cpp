@@ -122,3 +122,8 @@ TEST_CASE("wang2009: the thin walker walks 100 s", "[wang2009][claim]") {
   check_walker(
       {"thin_cot.controller.json", 1.341, 0.549, {0.719, 0.129, 0.152}, 10, {false, false}});
 }
+
+TEST_CASE("wang2009: the overweight walker walks 100 s", "[wang2009][claim]") {
+  check_walker(
+      {"overweight_cot.controller.json", 1.431, 0.546, {0.782, 0.092, 0.126}, 7, {false, false}});
+}
