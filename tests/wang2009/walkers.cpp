@@ -15,6 +15,7 @@
 #include <catch2/catch.hpp>
 
 #include <array>
+#include <numbers>
 #include <string>
 
 #include "gaitsynth/analysis/ankle_push_off.hpp"
@@ -126,4 +127,23 @@ TEST_CASE("wang2009: the thin walker walks 100 s", "[wang2009][claim]") {
 TEST_CASE("wang2009: the overweight walker walks 100 s", "[wang2009][claim]") {
   check_walker(
       {"overweight_cot.controller.json", 1.431, 0.546, {0.782, 0.092, 0.126}, 7, {false, false}});
+}
+
+// Sec. 5, "Changing terrain": "the level-ground walker fails at the 3-degree slope".
+TEST_CASE("wang2009: the level stocky walker falls on a 3 degree slope", "[wang2009][claim]") {
+  const std::string path =
+      std::string(GAITSYNTH_SOURCE_DIR) + "/data/wang2009/walkers/stocky_table2.controller.json";
+  const floating_model m = wang2009_humanoid(wang2009_preset(wang2009_saved_shape(path)));
+  wang2009_controller c(m);
+  const std::vector<double> p = load_wang2009_controller(path, c).parameters;
+  rollout_options opt = wang2009_rollout_options(m);
+  opt.duration = 30.0;
+  auto scratch = make_rollout_scratch(m);
+  semi_implicit_euler integ;
+  const rollout_result r = rollout(m, mixed_pd_actuator{}, c, distance_objective(),
+                                   slope_terrain(3.0 * std::numbers::pi / 180.0), integ,
+                                   std::span<const double>(p), opt, scratch);
+  INFO(to_string(r.reason) << " after " << r.time << " s");
+  CHECK(r.reason == stop_reason::fell);
+  CHECK(r.time < 15.0);  // 9.7 s
 }
