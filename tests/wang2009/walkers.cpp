@@ -147,3 +147,13 @@ TEST_CASE("wang2009: the level stocky walker falls on a 3 degree slope", "[wang2
   CHECK(r.reason == stop_reason::fell);
   CHECK(r.time < 15.0);  // 9.7 s
 }
+
+// Fig. 4's set-up (stocky, 1.8 m/s, 0.7 m steps) without E_ang.
+TEST_CASE("wang2009: Fig. 4's walker without E_ang walks 100 s", "[wang2009][claim]") {
+  check_walker({"stocky_fig4_without_ang.controller.json",
+                1.690,
+                0.525,
+                {0.619, 0.065, 0.315},
+                7,
+                {false, false}});
+}
