@@ -157,3 +157,13 @@ TEST_CASE("wang2009: Fig. 4's walker without E_ang walks 100 s", "[wang2009][cla
                 7,
                 {false, false}});
 }
+
+// Fig. 3's set-up (short, 1.0 m/s) with and without E_ratio.
+TEST_CASE("wang2009: Fig. 3's walker with E_ratio walks 100 s", "[wang2009][claim]") {
+  check_walker({"short_fig3_with_ratio.controller.json",
+                1.026,
+                0.347,
+                {0.786, 0.112, 0.103},
+                10,
+                {false, false}});
+}
