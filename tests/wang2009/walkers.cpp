@@ -167,3 +167,12 @@ TEST_CASE("wang2009: Fig. 3's walker with E_ratio walks 100 s", "[wang2009][clai
                 10,
                 {false, false}});
 }
+
+TEST_CASE("wang2009: Fig. 3's walker without E_ratio walks 100 s", "[wang2009][claim]") {
+  check_walker({"short_fig3_without_ratio.controller.json",
+                0.997,
+                0.346,
+                {0.791, 0.130, 0.080},
+                10,
+                {false, false}});
+}
