@@ -176,3 +176,8 @@ TEST_CASE("wang2009: Fig. 3's walker without E_ratio walks 100 s", "[wang2009][c
                 10,
                 {false, false}});
 }
+
+TEST_CASE("wang2009: the long-arm walker walks 100 s", "[wang2009][claim]") {
+  check_walker(
+      {"long_arm_cot.controller.json", 1.306, 0.241, {0.545, 0.124, 0.331}, 10, {false, false}});
+}
