@@ -52,6 +52,9 @@ void check_walker(const reported& w) {
   oo.fail_height = wang2009_fail_height(shape);
   const auto obj = wang2009_objective(m, oo);
   rollout_options opt = wang2009_rollout_options(m, oo.fail_height);
+  // The ground it was optimized on: friction from the file; these claims are on flat ground.
+  opt.contact.mu = saved.info.value("mu", 10.0);
+  REQUIRE(saved.info.value("slope_deg", 0.0) == 0.0);
   auto scratch = make_rollout_scratch(m);
   semi_implicit_euler integ;
 #ifdef GAITSYNTH_SANITIZED_BUILD
@@ -187,4 +190,11 @@ TEST_CASE("wang2009: the long-arm walker walks 100 s", "[wang2009][claim]") {
 TEST_CASE("wang2009: the robustly optimized stocky walker walks 100 s", "[wang2009][claim]") {
   check_walker(
       {"stocky_robust.controller.json", 1.082, 0.380, {0.793, 0.070, 0.137}, 10, {false, false}});
+}
+
+// Sec. 5's low-friction sequence: the stocky walker optimized on mu = 0.8 ("walks more gingerly, at
+// a slower rate"), then on mu = 0.3.
+TEST_CASE("wang2009: the stocky walker for mu = 0.8 walks 100 s", "[wang2009][claim]") {
+  check_walker(
+      {"stocky_mu08.controller.json", 1.146, 0.396, {0.722, 0.134, 0.144}, 10, {false, false}});
 }
