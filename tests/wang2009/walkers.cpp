@@ -198,3 +198,27 @@ TEST_CASE("wang2009: the stocky walker for mu = 0.8 walks 100 s", "[wang2009][cl
   check_walker(
       {"stocky_mu08.controller.json", 1.146, 0.396, {0.722, 0.134, 0.144}, 10, {false, false}});
 }
+
+TEST_CASE("wang2009: the stocky walker for mu = 0.3 walks 100 s", "[wang2009][claim]") {
+  check_walker(
+      {"stocky_mu03.controller.json", 1.231, 0.307, {0.668, 0.106, 0.227}, 10, {false, false}});
+}
+
+// Why the sequence is needed: the walker optimized on mu = 10 slips and falls on mu = 0.8.
+TEST_CASE("wang2009: the mu = 10 stocky walker falls on mu = 0.8", "[wang2009][claim]") {
+  const std::string path =
+      std::string(GAITSYNTH_SOURCE_DIR) + "/data/wang2009/walkers/stocky_table2.controller.json";
+  const floating_model m = wang2009_humanoid(wang2009_preset(wang2009_saved_shape(path)));
+  wang2009_controller c(m);
+  const std::vector<double> p = load_wang2009_controller(path, c).parameters;
+  rollout_options opt = wang2009_rollout_options(m);
+  opt.contact.mu = 0.8;
+  opt.duration = 30.0;
+  auto scratch = make_rollout_scratch(m);
+  semi_implicit_euler integ;
+  const rollout_result r = rollout(m, mixed_pd_actuator{}, c, distance_objective(), flat_terrain{},
+                                   integ, std::span<const double>(p), opt, scratch);
+  INFO(to_string(r.reason) << " after " << r.time << " s");
+  CHECK(r.reason == stop_reason::fell);
+  CHECK(r.time < 15.0);  // 7.7 s
+}
