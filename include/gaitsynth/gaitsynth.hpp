@@ -79,8 +79,8 @@
 #include "gaitsynth/rollout/problem_with_variants.hpp"
 #include "gaitsynth/rollout/recorder.hpp"
 #include "gaitsynth/rollout/result.hpp"
-#include "gaitsynth/rollout/start_perturbations.hpp"
 #include "gaitsynth/rollout/rollout.hpp"
+#include "gaitsynth/rollout/start_perturbations.hpp"
 #include "gaitsynth/rollout/termination.hpp"
 #include "gaitsynth/rollout/trajectory.hpp"
 
@@ -123,6 +123,6 @@
 #if __has_include(<nlohmann/json.hpp>)
 #include "gaitsynth/controllers/nearest_neighbor_json.hpp"
 #include "gaitsynth/io/viewer_outputs.hpp"
-#include "gaitsynth/viz/html_player.hpp"
 #include "gaitsynth/motion/keyframes_json.hpp"
+#include "gaitsynth/viz/html_player.hpp"
 #endif
