@@ -103,6 +103,24 @@ void check_walker(const reported& w) {
   CHECK(walked == w.perturbed_walked);
 }
 
+/// The stocky walker of Table 2 (optimized on flat ground, mu = 10) for 30 s on `ground` with
+/// friction mu: how the rollout ended.
+template <class Terrain>
+rollout_result stocky_walker_on(const Terrain& ground, double mu) {
+  const std::string path =
+      std::string(GAITSYNTH_SOURCE_DIR) + "/data/wang2009/walkers/stocky_table2.controller.json";
+  const floating_model m = wang2009_humanoid(wang2009_preset(wang2009_saved_shape(path)));
+  wang2009_controller c(m);
+  const std::vector<double> p = load_wang2009_controller(path, c).parameters;
+  rollout_options opt = wang2009_rollout_options(m);
+  opt.contact.mu = mu;
+  opt.duration = 30.0;
+  auto scratch = make_rollout_scratch(m);
+  semi_implicit_euler integ;
+  return rollout(m, mixed_pd_actuator{}, c, distance_objective(), ground, integ,
+                 std::span<const double>(p), opt, scratch);
+}
+
 }  // namespace
 
 TEST_CASE("wang2009: the Table 2 stocky walker walks 100 s", "[wang2009][claim]") {
@@ -130,25 +148,6 @@ TEST_CASE("wang2009: the thin walker walks 100 s", "[wang2009][claim]") {
 TEST_CASE("wang2009: the overweight walker walks 100 s", "[wang2009][claim]") {
   check_walker(
       {"overweight_cot.controller.json", 1.431, 0.546, {0.782, 0.092, 0.126}, 7, {false, false}});
-}
-
-// Sec. 5, "Changing terrain": "the level-ground walker fails at the 3-degree slope".
-TEST_CASE("wang2009: the level stocky walker falls on a 3 degree slope", "[wang2009][claim]") {
-  const std::string path =
-      std::string(GAITSYNTH_SOURCE_DIR) + "/data/wang2009/walkers/stocky_table2.controller.json";
-  const floating_model m = wang2009_humanoid(wang2009_preset(wang2009_saved_shape(path)));
-  wang2009_controller c(m);
-  const std::vector<double> p = load_wang2009_controller(path, c).parameters;
-  rollout_options opt = wang2009_rollout_options(m);
-  opt.duration = 30.0;
-  auto scratch = make_rollout_scratch(m);
-  semi_implicit_euler integ;
-  const rollout_result r = rollout(m, mixed_pd_actuator{}, c, distance_objective(),
-                                   slope_terrain(3.0 * std::numbers::pi / 180.0), integ,
-                                   std::span<const double>(p), opt, scratch);
-  INFO(to_string(r.reason) << " after " << r.time << " s");
-  CHECK(r.reason == stop_reason::fell);
-  CHECK(r.time < 15.0);  // 9.7 s
 }
 
 // Fig. 4's set-up (stocky, 1.8 m/s, 0.7 m steps) without E_ang.
@@ -204,21 +203,17 @@ TEST_CASE("wang2009: the stocky walker for mu = 0.3 walks 100 s", "[wang2009][cl
       {"stocky_mu03.controller.json", 1.231, 0.307, {0.668, 0.106, 0.227}, 10, {false, false}});
 }
 
-// Why the sequence is needed: the walker optimized on mu = 10 slips and falls on mu = 0.8.
-TEST_CASE("wang2009: the mu = 10 stocky walker falls on mu = 0.8", "[wang2009][claim]") {
-  const std::string path =
-      std::string(GAITSYNTH_SOURCE_DIR) + "/data/wang2009/walkers/stocky_table2.controller.json";
-  const floating_model m = wang2009_humanoid(wang2009_preset(wang2009_saved_shape(path)));
-  wang2009_controller c(m);
-  const std::vector<double> p = load_wang2009_controller(path, c).parameters;
-  rollout_options opt = wang2009_rollout_options(m);
-  opt.contact.mu = 0.8;
-  opt.duration = 30.0;
-  auto scratch = make_rollout_scratch(m);
-  semi_implicit_euler integ;
-  const rollout_result r = rollout(m, mixed_pd_actuator{}, c, distance_objective(), flat_terrain{},
-                                   integ, std::span<const double>(p), opt, scratch);
-  INFO(to_string(r.reason) << " after " << r.time << " s");
-  CHECK(r.reason == stop_reason::fell);
-  CHECK(r.time < 15.0);  // 7.7 s
+// Sec. 5, "Changing terrain": "the level-ground walker fails at the 3-degree slope"; and the
+// friction sequence is needed: the walker optimized on mu = 10 slips and falls on mu = 0.8.
+TEST_CASE("wang2009: the level stocky walker falls on a 3 degree slope and on mu = 0.8",
+          "[wang2009][claim]") {
+  const rollout_result slope =
+      stocky_walker_on(slope_terrain(3.0 * std::numbers::pi / 180.0), 10.0);
+  INFO("3 degrees: " << to_string(slope.reason) << " after " << slope.time << " s");
+  CHECK(slope.reason == stop_reason::fell);
+  CHECK(slope.time < 15.0);  // 9.7 s
+  const rollout_result slippery = stocky_walker_on(flat_terrain{}, 0.8);
+  INFO("mu = 0.8: " << to_string(slippery.reason) << " after " << slippery.time << " s");
+  CHECK(slippery.reason == stop_reason::fell);
+  CHECK(slippery.time < 15.0);  // 7.7 s
 }
