@@ -3,6 +3,7 @@
 // paper's own rule), and a round trip gives the vector back.
 #include <catch2/catch.hpp>
 
+#include "gaitsynth/controllers/fsm/wang2009_json.hpp"
 #include "gaitsynth/controllers/fsm/wang2009_shape_transfer.hpp"
 #include "gaitsynth/controllers/fsm/wang2009_table2.hpp"
 #include "gaitsynth/gaitsynth.hpp"
@@ -29,6 +30,14 @@ TEST_CASE("wang2009_transfer_parameters carries Table 2 from stocky to every sha
     for (std::size_t i = 0; i < back.size(); ++i)
       CHECK(back[i] == Approx(p[i]).epsilon(1e-12).margin(1e-12));
   }
+  // To its own shape a vector is carried bit for bit (a replay must retrace the optimized walk).
+  CHECK(wang2009_transfer_parameters(stocky, cs, p, stocky, cs) == p);
+  const std::string saved =
+      std::string(GAITSYNTH_SOURCE_DIR) + "/data/wang2009/walkers/overweight_cot.controller.json";
+  const auto ow = wang2009_humanoid(wang2009_shape::overweight);
+  const wang2009_controller co(ow);
+  const std::vector<double> q = load_wang2009_controller(saved, co).parameters;
+  CHECK(wang2009_transfer_parameters(ow, co, q, ow, co) == q);
   const std::vector<double> short_vector(p.begin(), p.end() - 1);
   CHECK_THROWS_AS(wang2009_transfer_parameters(stocky, cs, short_vector, stocky, cs),
                   std::invalid_argument);

@@ -45,8 +45,9 @@ inline std::vector<double> wang2009_transfer_parameters(const floating_model& fr
       out[static_cast<std::size_t>(L.kp(s, role))] *= w;
       out[static_cast<std::size_t>(L.kd(s, role))] *= w;
     }
+  // Shift the start height by the change of clearance: on the same body the shift is exactly 0,
+  // so a walker carried to its own shape keeps every bit (a replay retraces the optimized walk).
   const auto z = static_cast<std::size_t>(L.root_start(0));
-  out[z] = 0.0;
   out[z] += clearance - detail::wang2009_start_clearance(to, to_c, out);
   return out;
 }
