@@ -3,6 +3,8 @@
 // that owns its start state (Wang et al. 2009's) has written it.
 #include <catch2/catch.hpp>
 #include <cmath>
+#include <utility>
+#include <vector>
 
 #include "gaitsynth/controllers/fsm/wang2009_controller.hpp"
 #include "gaitsynth/controllers/fsm/wang2009_table2.hpp"
@@ -12,6 +14,16 @@
 #include "gaitsynth/rollout/start_perturbations.hpp"
 
 using namespace gaitsynth;
+
+namespace {
+/// The Wang 2009 controller bound to Table 2's parameters, and those parameters.
+std::pair<wang2009_controller, std::vector<double>> table2_controller(const floating_model& m) {
+  wang2009_controller c(m);
+  std::vector<double> p = wang2009_table2_parameters(m, c);
+  c.bind(p);
+  return {c, p};
+}
+}  // namespace
 
 TEST_CASE("joint_velocity_perturbations: seeded N(0, sigma) on the joints, zero on the root",
           "[rollout][perturbation]") {
@@ -51,9 +63,7 @@ TEST_CASE("joint_velocity_perturbations: seeded N(0, sigma) on the joints, zero 
 TEST_CASE("initial_velocity_offset is added after the controller writes its start state",
           "[rollout][perturbation]") {
   const auto m = wang2009_humanoid();
-  wang2009_controller c(m);
-  const std::vector<double> p = wang2009_table2_parameters(m, c);
-  c.bind(p);
+  const auto [c, p] = table2_controller(m);
   sim_state start = make_state(m);
   c.initial_state(m, start);
 
@@ -92,9 +102,7 @@ TEST_CASE("a robust cost over perturbed starts is the same for any thread count"
   // perturbed starts, evaluated on a thread pool; the cost of a candidate must not depend on which
   // worker, or how many workers, evaluate it.
   const auto m = wang2009_humanoid();
-  wang2009_controller c(m);
-  const std::vector<double> p0 = wang2009_table2_parameters(m, c);
-  c.bind(p0);
+  const auto [c, p0] = table2_controller(m);
   rollout_options opt;
   opt.initial_state = make_state(m);
   opt.implicit_joint_damping = true;
