@@ -3,7 +3,8 @@
 // (io/viewer_outputs.hpp writes the files; docs/viewer.md):
 //
 //   --html FILE        self-contained HTML player (viz/html_player.hpp)
-//   --filmstrip FILE   SVG strobe filmstrip (viz/filmstrip_svg.hpp)
+//   --filmstrip FILE   SVG strobe filmstrip (viz/filmstrip_svg.hpp), side view
+//   --filmstrip-front FILE   the same seen from the front
 //   --gait-svg FILE    SVG gait-cycle plot (viz/gait_plot_svg.hpp)
 //   --bvh FILE         BVH motion (io/bvh.hpp)
 //   --csv FILE         trajectory CSV (io/trajectory_csv.hpp)
@@ -28,6 +29,7 @@ namespace viewer_flags {
 inline const char* help() {
   return "  --html FILE         write a self-contained HTML player of the motion\n"
          "  --filmstrip FILE    write an SVG strobe filmstrip (side view)\n"
+         "  --filmstrip-front FILE  write an SVG strobe filmstrip seen from the front\n"
          "  --gait-svg FILE     write SVG gait-cycle plots (hip, knee, ankle)\n"
          "  --bvh FILE          write the motion as BVH (centimetres, Y up)\n"
          "  --csv FILE          write the recorded trajectory as CSV\n"
@@ -43,10 +45,13 @@ inline bool parse_flag(int argc, char** argv, int& i, gaitsynth::viz_outputs& ou
     std::string_view name;
     std::string viz_outputs::*field;
   };
-  static const flag flags[] = {
-      {"--html", &viz_outputs::html},          {"--filmstrip", &viz_outputs::filmstrip_svg},
-      {"--gait-svg", &viz_outputs::gait_svg},  {"--bvh", &viz_outputs::bvh},
-      {"--csv", &viz_outputs::trajectory_csv}, {"--mjcf-replay", &viz_outputs::mjcf_replay}};
+  static const flag flags[] = {{"--html", &viz_outputs::html},
+                               {"--filmstrip", &viz_outputs::filmstrip_svg},
+                               {"--filmstrip-front", &viz_outputs::filmstrip_front_svg},
+                               {"--gait-svg", &viz_outputs::gait_svg},
+                               {"--bvh", &viz_outputs::bvh},
+                               {"--csv", &viz_outputs::trajectory_csv},
+                               {"--mjcf-replay", &viz_outputs::mjcf_replay}};
   for (const flag& f : flags) {
     if (a == f.name) {
       if (i + 1 >= argc || argv[i + 1][0] == '\0' ||

@@ -69,6 +69,45 @@ TEST_CASE("filmstrip SVG: well-formed, one group per strobe frame", "[viz][svg]"
                     Catch::Contains("empty time window"));
 }
 
+namespace {
+/// Mean x1 of the <line> elements stroked in `colour` (a body side's colour).
+double mean_line_x(const std::string& svg, const std::string& colour) {
+  double sum = 0;
+  int n = 0;
+  for (std::size_t at = svg.find("<line x1=\""); at != std::string::npos;
+       at = svg.find("<line x1=\"", at + 1)) {
+    const std::size_t end = svg.find("/>", at);
+    if (svg.substr(at, end - at).find("stroke=\"" + colour + "\"") == std::string::npos) continue;
+    sum += std::stod(svg.substr(at + 10));
+    ++n;
+  }
+  return n > 0 ? sum / n : std::nan("");
+}
+}  // namespace
+
+TEST_CASE("filmstrip SVG, front view: frames side by side, the left leg on the viewer's right",
+          "[viz][svg]") {
+  const auto m = viz_test::make_biped<floating_root>();
+  const auto traj = viz_test::make_walk(m, 2.0, 0.02);
+  std::ostringstream one, three;
+  write_filmstrip_svg(m, traj, one, {.count = 1, .view = filmstrip_view::front});
+  // Seen from +x, the walker's left (+y, blue) is to the right of its right leg (orange).
+  CHECK(mean_line_x(one.str(), "#6f9bd8") > mean_line_x(one.str(), "#dd8452") + 50);
+  write_filmstrip_svg(m, traj, three, {.count = 3, .spread = 1.0, .view = filmstrip_view::front});
+  CHECK(viz_test::check_xml(three.str()).root == "svg");
+  CHECK(count(three.str(), "class=\"strobe\"") == 3);
+  CHECK(count(three.str(), "class=\"terrain\"") == 3);  // a ground strip under each frame
+  CHECK(count(three.str(), "class=\"com-path\"") == 0);
+  // Three frames 1 m apart make a picture wider than tall; one frame, taller than wide.
+  const auto aspect = [](const std::string& svg) {
+    const double w = std::stod(svg.substr(svg.find("width=\"") + 7));
+    const double h = std::stod(svg.substr(svg.find("height=\"") + 8));
+    return w / h;
+  };
+  CHECK(aspect(one.str()) < 1.0);
+  CHECK(aspect(three.str()) > 1.0);
+}
+
 TEST_CASE("gait plot SVG: three panels with mean, band and cycles", "[viz][svg]") {
   const auto m = viz_test::make_biped<planar_root>();
   const auto traj = viz_test::make_walk(m, 4.0, 0.01);

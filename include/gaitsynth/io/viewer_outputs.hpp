@@ -3,7 +3,8 @@
 /// Every file a viewer or another tool reads from one recorded motion, written in one call:
 ///
 ///   html            self-contained HTML player (viz/html_player.hpp)
-///   filmstrip_svg   SVG strobe filmstrip (viz/filmstrip_svg.hpp)
+///   filmstrip_svg   SVG strobe filmstrip, side view (viz/filmstrip_svg.hpp)
+///   filmstrip_front_svg  the same seen from the front
 ///   gait_svg        SVG gait-cycle plot (viz/gait_plot_svg.hpp)
 ///   bvh             BVH motion (io/bvh.hpp)
 ///   trajectory_csv  trajectory CSV (io/trajectory_csv.hpp)
@@ -31,15 +32,16 @@ namespace gaitsynth {
 
 /// Files requested (empty: not requested), with the writers' options.
 struct viz_outputs {
-  std::string html, filmstrip_svg, gait_svg, bvh, trajectory_csv, mjcf_replay;
+  std::string html, filmstrip_svg, filmstrip_front_svg, gait_svg, bvh, trajectory_csv, mjcf_replay;
   html_player_options html_options;
   filmstrip_options filmstrip;
+  filmstrip_options filmstrip_front{.view = filmstrip_view::front};
   gait_plot_options gait;
   bvh_options bvh_opts;
   mjcf_replay_options mjcf;
   bool any() const {
-    return !(html.empty() && filmstrip_svg.empty() && gait_svg.empty() && bvh.empty() &&
-             trajectory_csv.empty() && mjcf_replay.empty());
+    return !(html.empty() && filmstrip_svg.empty() && filmstrip_front_svg.empty() &&
+             gait_svg.empty() && bvh.empty() && trajectory_csv.empty() && mjcf_replay.empty());
   }
 };
 
@@ -57,6 +59,10 @@ void write_viz_outputs(const model<Root>& m, const trajectory& traj, const viz_o
   if (!out.filmstrip_svg.empty()) {
     save_filmstrip_svg(m, traj, out.filmstrip_svg, out.filmstrip);
     done("filmstrip", out.filmstrip_svg);
+  }
+  if (!out.filmstrip_front_svg.empty()) {
+    save_filmstrip_svg(m, traj, out.filmstrip_front_svg, out.filmstrip_front);
+    done("front filmstrip", out.filmstrip_front_svg);
   }
   if (!out.gait_svg.empty()) {
     save_gait_plot_svg(m, traj, out.gait_svg, out.gait);

@@ -2,10 +2,12 @@
 /// \file filmstrip_svg.hpp
 /// Strobe filmstrip of a recorded trajectory as SVG, like the papers' figures: the character drawn
 /// in side view (orthographic projection on the x-z plane, seen from -y) at a fixed time interval,
-/// each copy at its own place along the path, earlier copies fainter. Bodies are drawn from the
-/// model's shapes (box outlines, capsules, spheres; a segment to the children or to segment_end
-/// when a body has none), far (left, +y) limbs first, with the terrain profile under the path, the
-/// contact points that touch and the COM path. docs/viewer.md.
+/// each copy at its own place along the path, earlier copies fainter. The front view (on the y-z
+/// plane, seen from +x, the walker coming towards the viewer) sets the copies side by side,
+/// `spread` apart, so that the lateral sway, step width and arm swing of a 3-D walker show. Bodies
+/// are drawn from the model's shapes (box outlines, capsules, spheres; a segment to the children or
+/// to segment_end when a body has none), far (left, +y) limbs first, with the terrain profile under
+/// the path, the contact points that touch and the COM path. docs/viewer.md.
 #include <Eigen/Core>
 #include <algorithm>
 #include <cmath>
@@ -25,13 +27,20 @@
 
 namespace gaitsynth {
 
+/// Where the filmstrip is seen from.
+enum class filmstrip_view {
+  side,  ///< from -y: x to the right, frames at their own x (plus `spread`)
+  front  ///< from +x: y to the right, frames `spread` (default 0.9 m) apart
+};
+
 struct filmstrip_options {
   double interval = 0.0;  ///< s between strobe frames; 0: (t_end - t_begin) / (count - 1)
   int count = 10;         ///< strobe frames when interval == 0
   double t_begin = -std::numeric_limits<double>::infinity();  ///< s (clamped to the trajectory)
   double t_end = std::numeric_limits<double>::infinity();     ///< s
-  /// Extra x shift per strobe frame, m: separates frames of a slow walk. The terrain is drawn at
-  /// the shifted places, so this is meant for flat ground.
+  /// Extra shift per strobe frame along the picture's horizontal, m: in side view it separates
+  /// frames of a slow walk (the terrain is drawn at the shifted places, so this is meant for flat
+  /// ground); in front view it sets the frames side by side (0: 0.9 m).
   double spread = 0.0;
   double width = 1200;        ///< SVG width, px (height follows from the drawing's aspect ratio)
   bool fade = true;           ///< earlier frames fainter
@@ -41,12 +50,13 @@ struct filmstrip_options {
   bool show_terrain = true;   ///< terrain profile at the COM's y
   bool show_times = false;    ///< "t = ..." under each strobe frame
   std::string title;          ///< shown above the strip when not empty
+  filmstrip_view view = filmstrip_view::side;
 };
 
 namespace viz_detail {
 
 struct film_item {
-  double depth;  ///< world y (larger: farther from a viewer at -y)
+  double depth;  ///< view-frame y (larger: farther from the viewer)
   int order;     ///< tie breaker: draw order
   std::string svg;
 };
@@ -129,11 +139,19 @@ void write_filmstrip_svg(const model<Root>& m, const trajectory& traj, std::ostr
   std::vector<std::vector<Eigen::Vector3d>> P(strobe.size());
   std::vector<std::vector<Eigen::Quaterniond>> R(strobe.size());
   std::vector<Eigen::Vector3d> local;
+  // The picture is drawn in a view frame: x to the right, z up, y away from the viewer. Side view:
+  // the world frame. Front view: the world turned 90 degrees about z (world y to the right, world
+  // -x away from the viewer).
+  const bool front = opt.view == filmstrip_view::front;
+  const Eigen::Matrix3d V = front ? (Eigen::Matrix3d() << 0, 1, 0, -1, 0, 0, 0, 0, 1).finished()
+                                  : Eigen::Matrix3d::Identity();
+  const double spread = front && opt.spread == 0.0 ? 0.9 : opt.spread;
+  auto shift_of = [&](std::size_t k) { return Eigen::Vector3d(k * spread, 0, 0); };
   for (std::size_t k = 0; k < strobe.size(); ++k) {
     frame_body_poses(m, traj.frames[strobe[k]], P[k], R[k]);
-    const Eigen::Vector3d shift(k * opt.spread, 0, 0);
     for (int i = 0; i < nb; ++i) {
-      P[k][i] += shift;
+      P[k][i] = V * P[k][i] + shift_of(k);
+      R[k][i] = Eigen::Quaterniond(V) * R[k][i];
       body_points(m, i, local);
       double r = 0;
       for (const shape& s : m.bodies[i].shapes) r = std::max(r, s.radius);
@@ -146,7 +164,21 @@ void write_filmstrip_svg(const model<Root>& m, const trajectory& traj, std::ostr
   }
   const double ground_y = traj.frames[strobe.front()].com.y();
   double gx0 = xmin, gx1 = xmax;
-  if (opt.show_terrain) {
+  // Front view: under each frame, the terrain across the walking direction at its COM.
+  const double half_slot = 0.5 * std::max(spread, 0.2);
+  auto front_ground = [&](std::size_t k, double u) {
+    const Eigen::Vector3d& c = traj.frames[strobe[k]].com;
+    return terrain_height(traj.terrain, c.x(), u);
+  };
+  if (opt.show_terrain && front) {
+    for (std::size_t k = 0; k < strobe.size(); ++k) {
+      const double y0 = traj.frames[strobe[k]].com.y();
+      for (const double u : {y0 - half_slot, y0 + half_slot}) {
+        grow(u + shift_of(k).x(), front_ground(k, u));
+        grow(u + shift_of(k).x(), front_ground(k, u) - 0.05);
+      }
+    }
+  } else if (opt.show_terrain) {
     const double pad = 0.04 * (xmax - xmin) + 0.05;
     gx0 = xmin - pad;
     gx1 = xmax + pad;
@@ -179,7 +211,20 @@ void write_filmstrip_svg(const model<Root>& m, const trajectory& traj, std::ostr
     os << "<text x=\"" << fnum(opt.width / 2) << "\" y=\"20\" text-anchor=\"middle\" "
        << "font-family=\"sans-serif\" font-size=\"15\" font-weight=\"bold\">"
        << xml_escape(opt.title) << "</text>\n";
-  if (opt.show_terrain) {
+  if (opt.show_terrain && front) {
+    for (std::size_t k = 0; k < strobe.size(); ++k) {
+      const double y0 = traj.frames[strobe[k]].com.y(), h0 = shift_of(k).x();
+      std::string pts = pt(y0 - half_slot + h0, zmin);
+      for (int s = 0; s <= 20; ++s) {
+        const double u = y0 - half_slot + 2 * half_slot * s / 20.0;
+        pts += " " + pt(u + h0, front_ground(k, u));
+      }
+      pts += " " + pt(y0 + half_slot + h0, zmin);
+      os << "<polygon class=\"terrain\" fill=\"#ecebe4\" stroke=\"#77756b\" "
+            "stroke-width=\"1.2\" points=\""
+         << pts << "\"/>\n";
+    }
+  } else if (opt.show_terrain) {
     std::string pts = pt(gx0, zmin);
     for (int s = 0; s <= 200; ++s) {
       const double x = gx0 + (gx1 - gx0) * s / 200.0;
@@ -193,7 +238,7 @@ void write_filmstrip_svg(const model<Root>& m, const trajectory& traj, std::ostr
   if (opt.show_com_path) {
     std::string pts;
     for (const auto& fr : traj.frames)
-      if (fr.t >= ta - 1e-12 && fr.t <= tb + 1e-12 && fr.com.allFinite() && opt.spread == 0)
+      if (fr.t >= ta - 1e-12 && fr.t <= tb + 1e-12 && fr.com.allFinite() && spread == 0)
         pts += pt(fr.com.x(), fr.com.z()) + " ";
     if (!pts.empty())
       os << "<polyline class=\"com-path\" fill=\"none\" stroke=\"#555\" stroke-width=\"1\" "
@@ -270,16 +315,16 @@ void write_filmstrip_svg(const model<Root>& m, const trajectory& traj, std::ostr
     os << "<g class=\"strobe\" data-t=\"" << fnum(fr.t, 4) << "\" opacity=\"" << fnum(opacity, 3)
        << "\">\n";
     for (const auto& it : items) os << it.svg << "\n";
-    const Eigen::Vector3d shift(k * opt.spread, 0, 0);
+    const Eigen::Vector3d shift = shift_of(k);
     if (opt.show_contacts || opt.show_forces) {
       for (std::size_t c = 0; c < fr.contact_active.size() && c < fr.contact_position.size(); ++c) {
         if (!fr.contact_active[c]) continue;
-        const Eigen::Vector3d p = fr.contact_position[c] + shift;
+        const Eigen::Vector3d p = V * fr.contact_position[c] + shift;
         if (opt.show_contacts)
           os << "<circle class=\"contact\" cx=\"" << fnum(X(p.x()), 1) << "\" cy=\""
              << fnum(Z(p.z()), 1) << "\" r=\"3\" fill=\"#d62728\"/>\n";
         if (opt.show_forces && c < fr.contact_force.size()) {
-          const Eigen::Vector3d e = p + force_scale * fr.contact_force[c];
+          const Eigen::Vector3d e = p + force_scale * (V * fr.contact_force[c]);
           os << "<line class=\"force\" x1=\"" << fnum(X(p.x()), 1) << "\" y1=\""
              << fnum(Z(p.z()), 1) << "\" x2=\"" << fnum(X(e.x()), 1) << "\" y2=\""
              << fnum(Z(e.z()), 1) << "\" stroke=\"#2ca02c\" stroke-width=\"1.5\"/>\n";
