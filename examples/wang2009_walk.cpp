@@ -12,6 +12,8 @@
 //                 [--check-seconds S] [--horizon S] [--sigma S]
 //                 [--robust-starts K] [--start-sigma S] [--robust-pushes K] [--push-force N]
 //                 [--without TERM]...   (E_ratio, E_ang, ...: the term's weight set to 0)
+//                 [--weight TERM=W]...  (the term's weight of eq. 16 set to W; ours, not the
+//                 paper's: a continuation stage may press one term harder)
 //                 [--slope DEG] [--mu MU]   (uphill along +x; ground friction, default 10)
 //   wang2009_walk --replay FILE [--check-seconds S] [--out DIR]
 //   wang2009_walk --simbicon [--check-seconds S] [--out DIR]     (the SIMBICON baseline)
@@ -36,6 +38,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <map>
 #include <nlohmann/json.hpp>
 #include <numbers>
 #include <optional>
@@ -74,11 +77,12 @@ struct cli {
   double horizon = 10.0;  // s, Sec. 4.3
   double sigma = 0.0025;  // Sec. 4.3, on parameters normalized to [0, 1]
   int robust_starts = 0, robust_pushes = 0;
-  double start_sigma = 0.05;         // rad/s, the claim tests' perturbation
-  double push_force = 100.0;         // N
-  std::vector<std::string> without;  // terms of eq. 16 left out (weight 0): Figs. 3 and 4
-  double slope_deg = 0.0;            // uphill slope along +x (Sec. 5, "Changing terrain")
-  double mu = 10.0;                  // ground friction (Sec. 4.2; 0.8 and 0.3 in Sec. 5)
+  double start_sigma = 0.05;              // rad/s, the claim tests' perturbation
+  double push_force = 100.0;              // N
+  std::vector<std::string> without;       // terms of eq. 16 left out (weight 0): Figs. 3 and 4
+  std::map<std::string, double> weights;  // --weight TERM=W: weights of eq. 16 set by hand
+  double slope_deg = 0.0;                 // uphill slope along +x (Sec. 5, "Changing terrain")
+  double mu = 10.0;                       // ground friction (Sec. 4.2; 0.8 and 0.3 in Sec. 5)
   bool slope_given = false, mu_given = false;
   std::string command;  // the command line, kept in the saved controller
   viz_outputs viz;
@@ -91,7 +95,7 @@ struct cli {
                " [--check-seconds S]\n"
                "       [--horizon S] [--sigma S] [--robust-starts K] [--start-sigma S]"
                " [--robust-pushes K] [--push-force N]\n"
-               "       [--without TERM]... [--slope DEG] [--mu MU]\n"
+               "       [--without TERM]... [--weight TERM=W]... [--slope DEG] [--mu MU]\n"
                "       "
             << name << " --replay CONTROLLER.json [--check-seconds S] [--out DIR]\n"
             << "       " << name << " --simbicon [--check-seconds S] [--out DIR]\n"
@@ -148,7 +152,12 @@ cli parse(int argc, char** argv) {
       c.push_force = std::stod(value());
     else if (a == "--without")
       c.without.push_back(value());
-    else if (a == "--slope") {
+    else if (a == "--weight") {
+      const std::string v = value();
+      const std::size_t eq = v.find('=');
+      check_argument(eq != std::string::npos, "--weight wants TERM=W, got '", v, "'");
+      c.weights[v.substr(0, eq)] = std::stod(v.substr(eq + 1));
+    } else if (a == "--slope") {
       c.slope_deg = std::stod(value());
       c.slope_given = true;
     } else if (a == "--mu") {
@@ -179,6 +188,7 @@ void save(const fs::path& path, const cli& c, const wang2009_controller& ctrl,
   s.parameters.assign(x.data(), x.data() + x.size());
   s.info["command"] = c.command;
   s.info["without"] = c.without;
+  s.info["weights"] = c.weights;
   s.info["slope_deg"] = c.slope_deg;
   s.info["mu"] = c.mu;
   save_wang2009_controller(path.string(), ctrl, s);
@@ -194,6 +204,11 @@ void write_views(const floating_model& m, const trajectory& tr, const cli& c,
   v.filmstrip.t_end = std::min(3.0, tr.frames.back().t);
   v.filmstrip.interval = 0.1;
   v.filmstrip.title = title;
+  // From the front, one gait cycle (about 0.8 s) of steady walking, side by side.
+  v.filmstrip_front.t_end = std::min(4.8, tr.frames.back().t);
+  v.filmstrip_front.t_begin = std::max(0.0, v.filmstrip_front.t_end - 0.8);
+  v.filmstrip_front.interval = 0.1;
+  v.filmstrip_front.title = title + ", from the front";
   // Fig. 6's curves: the left thigh's and foot's world pitch and the left knee, over the cycles
   // from left heel strike to left heel strike.
   using kind = gait_channel::kind;
@@ -359,6 +374,7 @@ int optimize_and_check(const floating_model& m, const cli& c, const wang2009_con
   sum["ankle_push_off"] = push_off_summary(m, tr);
   sum["horizon"] = c.horizon;
   sum["without"] = c.without;
+  sum["weights"] = c.weights;
   sum["slope_deg"] = c.slope_deg;
   sum["mu"] = c.mu;
   sum["evaluations"] = res.evaluations;
@@ -381,6 +397,21 @@ int optimize_and_check(const floating_model& m, const cli& c, const wang2009_con
   sum["perturbed_starts_walked"] = walked;
   std::cout << sum.dump() << std::endl;
   return 0;
+}
+
+/// Sets the weight of term `name` (E_user, ..., E_ratio) of eq. 16.
+void set_weight(wang2009_weights& w, const std::string& name, double value) {
+  const auto k = std::find(wang2009_term_names.begin(), wang2009_term_names.end(), name);
+  check_argument(k != wang2009_term_names.end(), "unknown term '", name,
+                 "' (E_user, E_vel, E_land, E_fail, E_sym, E_ang, E_head, E_power, E_ratio)");
+  check_argument(std::isfinite(value) && value >= 0.0, "weight of ", name,
+                 " must be finite and >= 0, got ", value);
+  double* slot[] = {&w.user, &w.vel, &w.land, &w.fail, &w.sym, &w.ang, &w.head, nullptr, &w.ratio};
+  const auto i = static_cast<std::size_t>(k - wang2009_term_names.begin());
+  if (slot[i])
+    *slot[i] = value;
+  else
+    w.power = value;
 }
 
 }  // namespace
@@ -414,19 +445,8 @@ int main(int argc, char** argv) try {
   wang2009_objective_options oo;
   oo.target_speed = c.speed;
   oo.target_step_length = c.step_length;
-  for (const std::string& t : c.without) {
-    const auto k = std::find(wang2009_term_names.begin(), wang2009_term_names.end(), t);
-    check_argument(k != wang2009_term_names.end(), "--without: unknown term '", t,
-                   "' (E_user, E_vel, E_land, E_fail, E_sym, E_ang, E_head, E_power, E_ratio)");
-    double* w[] = {&oo.weights.user, &oo.weights.vel, &oo.weights.land,
-                   &oo.weights.fail, &oo.weights.sym, &oo.weights.ang,
-                   &oo.weights.head, nullptr,         &oo.weights.ratio};
-    const auto i = static_cast<std::size_t>(k - wang2009_term_names.begin());
-    if (w[i])
-      *w[i] = 0.0;
-    else
-      oo.weights.power = 0.0;
-  }
+  for (const std::string& t : c.without) set_weight(oo.weights, t, 0.0);
+  for (const auto& [t, w] : c.weights) set_weight(oo.weights, t, w);
   oo.fail_height = wang2009_fail_height(c.shape);  // Sec. 4.1
   rollout_options opt = wang2009_rollout_options(m, oo.fail_height);
   opt.contact.mu = c.mu;
