@@ -51,6 +51,7 @@
 #include "gaitsynth/controllers/fsm/wang2009_shape_transfer.hpp"
 #include "gaitsynth/gaitsynth.hpp"
 #include "gaitsynth/io/csv.hpp"
+#include "gaitsynth/io/normative_gait.hpp"
 #include "gaitsynth/rollout/push_test.hpp"
 #include "gaitsynth/rollout/start_perturbations.hpp"
 #include "gaitsynth/synthesis/wang2009_search_space.hpp"
@@ -217,6 +218,20 @@ void write_views(const floating_model& m, const trajectory& tr, const cli& c,
       {.type = kind::joint_angle, .label = "knee angle", .name = "lknee"},
       {.type = kind::segment_pitch, .label = "foot orientation", .name = "lfoot"}};
   v.gait.title = title + ": gait cycles (Fig. 6)";
+  // The human knee over the same cycle, as Fig. 6 overlays motion capture (data/normative_gait/:
+  // one adult at 1.32 m/s, mean and s.d. over 11 trials). Only the knee: the data has joint
+  // angles, and Fig. 6's thigh and foot curves are segment orientations.
+  const std::string human =
+      std::string(GAITSYNTH_SOURCE_DIR) + "/data/normative_gait/falisse2019_subject1_walking.csv";
+  if (std::ifstream(human).good()) {
+    const normative_gait data = load_normative_gait(human);
+    const normative_curve& knee = data.curve("knee_flexion_angle");
+    v.gait.references = {{.channel = 1,
+                          .label = "human, 1.32 m/s (Falisse et al. 2019)",
+                          .percent = knee.percent,
+                          .mean = knee.mean,
+                          .sd = knee.sd}};
+  }
   v.gait.show_cycles = false;  // the mean and its band, as Fig. 6 draws them
   write_viz_outputs(m, tr, v, &std::cerr);
 }

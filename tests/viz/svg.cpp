@@ -2,6 +2,7 @@
 // expected structure; the convergence reader is tolerant of column order and extra columns.
 #include <catch2/catch.hpp>
 
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -106,6 +107,44 @@ TEST_CASE("filmstrip SVG, front view: frames side by side, the left leg on the v
   };
   CHECK(aspect(one.str()) < 1.0);
   CHECK(aspect(three.str()) > 1.0);
+}
+
+TEST_CASE("gait plot SVG: a reference curve over one panel, in its band and named", "[viz][svg]") {
+  const auto m = viz_test::make_biped<planar_root>();
+  const auto traj = viz_test::make_walk(m, 4.0, 0.01);
+  gait_plot_options o;
+  // Far above the walk's knee curve, so that the panel's range must grow to hold it.
+  o.references = {{.channel = 1,
+                   .label = "human <ref>",
+                   .percent = {0, 50, 100},
+                   .mean = {500, 600, 500},
+                   .sd = {10, 10, 10}}};
+  std::ostringstream os;
+  write_gait_plot_svg(m, traj, os, o);
+  const std::string svg = os.str();
+  CHECK(viz_test::check_xml(svg).root == "svg");
+  CHECK(count(svg, "class=\"reference\"") == 1);
+  CHECK(count(svg, "class=\"reference-band\"") == 1);
+  CHECK(svg.find("dashed green: human &lt;ref&gt; (") != std::string::npos);
+  // The y axis of panel 1 reaches the reference's top (610) and the others do not.
+  const std::size_t p1 = svg.find("id=\"panel-1\""), p2 = svg.find("id=\"panel-2\"");
+  CHECK(svg.substr(p1, p2 - p1).find(">600<") != std::string::npos);
+  CHECK(svg.substr(p2).find(">600<") == std::string::npos);
+  // Without s.d.: the line alone.
+  o.references[0].sd.clear();
+  std::ostringstream o2;
+  write_gait_plot_svg(m, traj, o2, o);
+  CHECK(count(o2.str(), "class=\"reference-band\"") == 0);
+  CHECK(count(o2.str(), "class=\"reference\"") == 1);
+  // Bad references are named.
+  o.references[0].channel = 3;
+  CHECK_THROWS_WITH(write_gait_plot_svg(m, traj, o2, o),
+                    Catch::Contains("human <ref>") && Catch::Contains("panel 3 of 3"));
+  o.references[0].channel = 0;
+  o.references[0].mean = {1, 2};
+  CHECK_THROWS_WITH(write_gait_plot_svg(m, traj, o2, o), Catch::Contains("equal sizes"));
+  o.references[0].mean = {1, std::nan(""), 3};
+  CHECK_THROWS_WITH(write_gait_plot_svg(m, traj, o2, o), Catch::Contains("not finite"));
 }
 
 TEST_CASE("gait plot SVG: three panels with mean, band and cycles", "[viz][svg]") {

@@ -3,7 +3,10 @@
 /// Gait-cycle plot as SVG: one panel per channel (by default sagittal hip, knee and ankle angles)
 /// against percent of the gait cycle, the mean over cycles as a solid curve inside a band of
 /// +- one standard deviation, and optionally each cycle as a thin curve: the layout of
-/// Wang et al. 2009, Figure 6. The analysis is gait_cycles() (gait_cycles.hpp). docs/viewer.md.
+/// Wang et al. 2009, Figure 6. The analysis is gait_cycles() (gait_cycles.hpp). Reference curves
+/// (human data, io/normative_gait.hpp) can be drawn over a panel, dashed in their own band, as
+/// Fig. 6 overlays motion capture. docs/viewer.md.
+#include <cmath>
 #include <ostream>
 #include <sstream>
 #include <stdexcept>
@@ -14,12 +17,21 @@
 
 namespace gaitsynth {
 
+/// A reference curve over one panel: dashed, inside its own band of +- sd.
+struct gait_reference {
+  std::size_t channel = 0;  ///< the panel: an index into cycles.channels
+  std::string label;        ///< named in the plot's note
+  std::vector<double> percent, mean;
+  std::vector<double> sd;  ///< empty: no band
+};
+
 struct gait_plot_options {
   gait_cycle_options cycles;  ///< channels, side, foot, cycle starts
   bool show_cycles = true;    ///< every cycle as a thin grey curve under the mean
   std::string title;          ///< empty: "<model>: gait cycles"
   double panel_width = 300;   ///< px
   double panel_height = 220;  ///< px
+  std::vector<gait_reference> references;
 };
 
 /// Draws an already computed gait_cycle_data (lets callers reuse or inspect the numbers).
@@ -29,6 +41,21 @@ inline void write_gait_plot_svg(const gait_cycle_data& d, std::ostream& os,
   check_positive(opt.panel_width, "write_gait_plot_svg: panel_width");
   check_positive(opt.panel_height, "write_gait_plot_svg: panel_height");
   const std::size_t nch = d.channels.size();
+  for (std::size_t r = 0; r < opt.references.size(); ++r) {
+    const gait_reference& ref = opt.references[r];
+    check_argument(ref.channel < nch, "write_gait_plot_svg: reference ", r, " ('", ref.label,
+                   "') is for panel ", ref.channel, " of ", nch);
+    check_argument(ref.mean.size() == ref.percent.size() && ref.percent.size() >= 2 &&
+                       (ref.sd.empty() || ref.sd.size() == ref.percent.size()),
+                   "write_gait_plot_svg: reference '", ref.label, "' has ", ref.percent.size(),
+                   " percentages, ", ref.mean.size(), " means and ", ref.sd.size(),
+                   " s.d.s (want at least 2, equal sizes, s.d. optional)");
+    for (std::size_t s = 0; s < ref.percent.size(); ++s)
+      check_argument(std::isfinite(ref.percent[s]) && std::isfinite(ref.mean[s]) &&
+                         (ref.sd.empty() || std::isfinite(ref.sd[s])),
+                     "write_gait_plot_svg: reference '", ref.label, "' sample ", s,
+                     " is not finite");
+  }
   const double ml = 64, mr = 16, mt = 56, mb = 70, gap = 70;
   const double W = ml + mr + nch * opt.panel_width + (nch > 0 ? (nch - 1) * gap : 0);
   const double H = mt + opt.panel_height + mb;
@@ -52,12 +79,38 @@ inline void write_gait_plot_svg(const gait_cycle_data& d, std::ostream& os,
       lo = std::min(lo, d.mean[c][s] - d.stddev[c][s]);
       hi = std::max(hi, d.mean[c][s] + d.stddev[c][s]);
     }
+    for (const gait_reference& ref : opt.references)
+      if (ref.channel == c)
+        for (std::size_t s = 0; s < ref.percent.size(); ++s) {
+          const double e = ref.sd.empty() ? 0.0 : ref.sd[s];
+          lo = std::min(lo, ref.mean[s] - e);
+          hi = std::max(hi, ref.mean[s] + e);
+        }
     pad_range(lo, hi);
     P.ylo = lo;
     P.yhi = hi;
     const gait_channel& ch = d.channels[c];
     os << "<g class=\"panel\" id=\"panel-" << c << "\">\n";
     P.draw_axes(os, "% gait cycle", ch.label + " (" + ch.unit + ")", ch.label);
+    for (const gait_reference& ref : opt.references) {
+      if (ref.channel != c) continue;
+      if (!ref.sd.empty()) {
+        std::string band;
+        auto add = [&](std::size_t s, double sign) {  // appended piecewise: GCC 12's -Wrestrict
+          band += fnum(P.X(ref.percent[s]));
+          band += ',';
+          band += fnum(P.Y(ref.mean[s] + sign * ref.sd[s]));
+          band += ' ';
+        };
+        for (std::size_t s = 0; s < ref.percent.size(); ++s) add(s, 1.0);
+        for (std::size_t s = ref.percent.size(); s-- > 0;) add(s, -1.0);
+        os << "<polygon class=\"reference-band\" fill=\"#2ca02c\" fill-opacity=\"0.18\" "
+              "stroke=\"none\" points=\""
+           << band << "\"/>\n";
+      }
+      P.draw_line(os, ref.percent, ref.mean, "#2ca02c", 1.8,
+                  "class=\"reference\" stroke-dasharray=\"6 4\"");
+    }
     if (n == 0) {
       os << "<text x=\"" << fnum(P.left + P.width / 2) << "\" y=\"" << fnum(P.top + P.height / 2)
          << "\" text-anchor=\"middle\" font-family=\"sans-serif\" font-size=\"12\" fill=\"#a00\">"
@@ -88,6 +141,8 @@ inline void write_gait_plot_svg(const gait_cycle_data& d, std::ostream& os,
     note = "fewer than two heel strikes" + (d.foot.empty() ? std::string() : " of " + d.foot) +
            " found (" + std::to_string(d.cycle_starts.size()) + ")";
   }
+  for (const gait_reference& ref : opt.references)
+    note += "; dashed green: " + ref.label + " (" + d.channels[ref.channel].label + ")";
   os << "<text x=\"" << fnum(ml) << "\" y=\"" << fnum(H - 12)
      << "\" font-family=\"sans-serif\" font-size=\"11\" fill=\"#555\">" << xml_escape(note)
      << "</text>\n";
