@@ -111,6 +111,7 @@
 #include "gaitsynth/io/csv.hpp"
 #include "gaitsynth/io/mjcf.hpp"
 #include "gaitsynth/io/mjcf_replay.hpp"
+#include "gaitsynth/io/normative_gait.hpp"
 #include "gaitsynth/io/trajectory_csv.hpp"
 
 #include "gaitsynth/viz/convergence_plot_svg.hpp"
