@@ -117,12 +117,12 @@ void check_walker(const reported& w) {
   check_walker_on(w, slope_terrain(slope_deg * std::numbers::pi / 180.0));
 }
 
-/// The stocky walker of Table 2 (optimized on flat ground, mu = 10) for 30 s on `ground` with
-/// friction mu: how the rollout ended.
+/// A level walker (optimized on flat ground, mu = 10; by default the stocky walker of Table 2) for
+/// 30 s on `ground` with friction mu: how the rollout ended.
 template <class Terrain>
-rollout_result stocky_walker_on(const Terrain& ground, double mu) {
-  const std::string path =
-      std::string(GAITSYNTH_SOURCE_DIR) + "/data/wang2009/walkers/stocky_table2.controller.json";
+rollout_result stocky_walker_on(const Terrain& ground, double mu,
+                                const char* file = "stocky_table2.controller.json") {
+  const std::string path = std::string(GAITSYNTH_SOURCE_DIR) + "/data/wang2009/walkers/" + file;
   const floating_model m = wang2009_humanoid(wang2009_preset(wang2009_saved_shape(path)));
   wang2009_controller c(m);
   const std::vector<double> p = load_wang2009_controller(path, c).parameters;
@@ -151,6 +151,19 @@ TEST_CASE("wang2009: the stocky walker with the human power ratio walks 100 s",
                 0.341,
                 {0.433, 0.040, 0.527},
                 9,
+                {false, false},
+                true});
+}
+
+// The same with the step-length target of the paper's slope continuation (0.65 m): the best of
+// the first 520 iterations (the run's final best falls at 18.6 s).
+TEST_CASE("wang2009: the level stocky walker for the slope continuation walks 100 s",
+          "[wang2009][claim]") {
+  check_walker({"stocky_step065.controller.json",
+                1.553,
+                0.521,
+                {0.434, 0.056, 0.510},
+                10,
                 {false, false},
                 true});
 }
@@ -243,4 +256,11 @@ TEST_CASE("wang2009: the level stocky walker falls on a 3 degree slope and on mu
   INFO("mu = 0.8: " << to_string(slippery.reason) << " after " << slippery.time << " s");
   CHECK(slippery.reason == stop_reason::fell);
   CHECK(slippery.time < 15.0);  // 7.7 s
+  // The level walker that starts the slope continuation (0.65 m step target) fails there too.
+  const rollout_result step065 = stocky_walker_on(slope_terrain(3.0 * std::numbers::pi / 180.0),
+                                                  10.0, "stocky_step065.controller.json");
+  INFO("0.65 m walker on 3 degrees: " << to_string(step065.reason) << " after " << step065.time
+                                      << " s");
+  CHECK(step065.reason == stop_reason::fell);
+  CHECK(step065.time < 25.0);  // 18.9 s
 }
