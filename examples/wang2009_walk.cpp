@@ -46,6 +46,7 @@
 #include <vector>
 
 #include "gaitsynth/analysis/ankle_push_off.hpp"
+#include "gaitsynth/analysis/arm_swing.hpp"
 #include "gaitsynth/controllers/fsm/simbicon.hpp"
 #include "gaitsynth/controllers/fsm/wang2009_json.hpp"
 #include "gaitsynth/controllers/fsm/wang2009_shape_transfer.hpp"
@@ -267,6 +268,16 @@ nlohmann::json push_off_summary(const floating_model& m, const trajectory& tr) {
   return j;
 }
 
+/// Fig. 4's arm swing (analysis/arm_swing.hpp) after the first 2 s: opposite-leg correlation
+/// near +1 is the human pattern.
+nlohmann::json arm_swing_summary(const floating_model& m, const trajectory& tr) {
+  if (tr.frames.empty() || tr.frames.back().t < 3.0) return nullptr;
+  const arm_swing_report a = arm_swing(m, tr, 2.0);
+  return {{"opposite_leg_correlation", a.opposite_leg_correlation},
+          {"same_leg_correlation", a.same_leg_correlation},
+          {"arm_pitch_amplitude_rad", a.arm_pitch_amplitude}};
+}
+
 /// --simbicon: the baseline walk (controllers/fsm/simbicon.hpp) for check_seconds, scored and
 /// reported by eq. 16 like an optimized walker.
 int run_simbicon(const floating_model& m, const cli& c) {
@@ -297,6 +308,7 @@ int run_simbicon(const floating_model& m, const cli& c) {
   nlohmann::json sum = check_summary(c, r, rep);
   sum["controller"] = "simbicon";
   sum["ankle_push_off"] = push_off_summary(m, tr);
+  sum["arm_swing"] = arm_swing_summary(m, tr);
   std::cout << sum.dump() << std::endl;
   return 0;
 }
@@ -387,6 +399,7 @@ int optimize_and_check(const floating_model& m, const cli& c, const wang2009_con
   nlohmann::json sum = check_summary(c, r, rep);
   sum["cost"] = best_cost;
   sum["ankle_push_off"] = push_off_summary(m, tr);
+  sum["arm_swing"] = arm_swing_summary(m, tr);
   sum["horizon"] = c.horizon;
   sum["without"] = c.without;
   sum["weights"] = c.weights;
