@@ -169,6 +169,41 @@ TEST_CASE("wang2009: the level stocky walker for the slope continuation walks 10
                 true});
 }
 
+// Sec. 5, "Changing terrain": the uphill continuation from the level 0.65 m walker, 3 degrees
+// at a time, 300 iterations each, with the 0.65 m step target (E_ratio weighted 10, as its
+// start). The 3 degree stage walks its 10 s and falls at 21.9 s (a run record only, as the
+// paper's intermediate slopes were "not run to convergence"); 6, 9 and 12 degrees walk 100 s.
+// Each is walked up its own slope (info.slope_deg).
+TEST_CASE("wang2009: the 6 degree uphill walker walks 100 s", "[wang2009][claim]") {
+  check_walker({"stocky_slope06.controller.json",
+                1.622,
+                0.616,
+                {0.441, 0.031, 0.528},
+                8,
+                {false, false},
+                true});
+}
+
+TEST_CASE("wang2009: the 9 degree uphill walker walks 100 s", "[wang2009][claim]") {
+  check_walker({"stocky_slope09.controller.json",
+                1.662,
+                0.630,
+                {0.443, 0.029, 0.528},
+                10,
+                {false, false},
+                true});
+}
+
+TEST_CASE("wang2009: the 12 degree uphill walker walks 100 s", "[wang2009][claim]") {
+  check_walker({"stocky_slope12.controller.json",
+                1.744,
+                0.630,
+                {0.445, 0.031, 0.524},
+                10,
+                {false, false},
+                true});
+}
+
 // Sec. 5, "Variation in body shape": cost-of-transport walkers (no speed or step target) for the
 // other shapes, each carried from the stocky walker and optimized 250 iterations.
 TEST_CASE("wang2009: the tall walker walks 100 s", "[wang2009][claim]") {
