@@ -268,6 +268,22 @@ nlohmann::json push_off_summary(const floating_model& m, const trajectory& tr) {
   return j;
 }
 
+/// The torso's mean world pitch after the first 2 s, degrees, positive leaning forward (about
+/// world +y, atan2(R(0,2), R(2,2)), as Fig. 6's segment orientations).
+nlohmann::json torso_pitch_summary(const floating_model& m, const trajectory& tr) {
+  const auto b = static_cast<std::size_t>(m.body_index("torso"));
+  double sum = 0.0;
+  int n = 0;
+  for (const trajectory_frame& f : tr.frames)
+    if (f.t >= 2.0 && f.body_orientation.size() > b) {
+      const Eigen::Matrix3d R = f.body_orientation[b].normalized().toRotationMatrix();
+      sum += std::atan2(R(0, 2), R(2, 2));
+      ++n;
+    }
+  if (n == 0) return nullptr;
+  return sum / n * 180.0 / std::numbers::pi;
+}
+
 /// Fig. 4's arm swing (analysis/arm_swing.hpp) after the first 2 s: opposite-leg correlation
 /// near +1 is the human pattern.
 nlohmann::json arm_swing_summary(const floating_model& m, const trajectory& tr) {
@@ -309,6 +325,7 @@ int run_simbicon(const floating_model& m, const cli& c) {
   sum["controller"] = "simbicon";
   sum["ankle_push_off"] = push_off_summary(m, tr);
   sum["arm_swing"] = arm_swing_summary(m, tr);
+  sum["torso_pitch_deg"] = torso_pitch_summary(m, tr);
   std::cout << sum.dump() << std::endl;
   return 0;
 }
@@ -400,6 +417,7 @@ int optimize_and_check(const floating_model& m, const cli& c, const wang2009_con
   sum["cost"] = best_cost;
   sum["ankle_push_off"] = push_off_summary(m, tr);
   sum["arm_swing"] = arm_swing_summary(m, tr);
+  sum["torso_pitch_deg"] = torso_pitch_summary(m, tr);
   sum["horizon"] = c.horizon;
   sum["without"] = c.without;
   sum["weights"] = c.weights;
