@@ -118,22 +118,32 @@ void check_walker(const reported& w) {
   check_walker_on(w, slope_terrain(slope_deg * std::numbers::pi / 180.0));
 }
 
-/// A level walker (optimized on flat ground, mu = 10; by default the stocky walker of Table 2) for
-/// 30 s on `ground` with friction mu: how the rollout ended.
+/// The saved controller `file` (under data/wang2009/) walked for `seconds` on `ground` with
+/// friction mu, recorded into `record` when given: how the rollout ended.
 template <class Terrain>
-rollout_result stocky_walker_on(const Terrain& ground, double mu,
-                                const char* file = "stocky_table2.controller.json") {
-  const std::string path = std::string(GAITSYNTH_SOURCE_DIR) + "/data/wang2009/walkers/" + file;
+rollout_result walk_saved(const std::string& file, const Terrain& ground, double mu, double seconds,
+                          trajectory* record = nullptr) {
+  const std::string path = std::string(GAITSYNTH_SOURCE_DIR) + "/data/wang2009/" + file;
   const floating_model m = wang2009_humanoid(wang2009_preset(wang2009_saved_shape(path)));
   wang2009_controller c(m);
   const std::vector<double> p = load_wang2009_controller(path, c).parameters;
   rollout_options opt = wang2009_rollout_options(m);
   opt.contact.mu = mu;
-  opt.duration = 30.0;
+  opt.duration = seconds;
+  opt.record = record;
+  opt.record_every = 40;
   auto scratch = make_rollout_scratch(m);
   semi_implicit_euler integ;
   return rollout(m, mixed_pd_actuator{}, c, distance_objective(), ground, integ,
                  std::span<const double>(p), opt, scratch);
+}
+
+/// A level walker (optimized on flat ground, mu = 10; by default the stocky walker of Table 2) for
+/// 30 s on `ground` with friction mu.
+template <class Terrain>
+rollout_result stocky_walker_on(const Terrain& ground, double mu,
+                                const char* file = "stocky_table2.controller.json") {
+  return walk_saved(std::string("walkers/") + file, ground, mu, 30.0);
 }
 
 }  // namespace
@@ -330,22 +340,12 @@ TEST_CASE("wang2009: the level stocky walker falls on a 3 degree slope and on mu
 // record's controller) much more so; analysis/arm_swing.hpp, over 2-15 s.
 TEST_CASE("wang2009: Fig. 4, E_ang swings the arms with the opposite legs", "[wang2009][claim]") {
   const auto opposite_leg_correlation = [](const std::string& file) {
-    const std::string path = std::string(GAITSYNTH_SOURCE_DIR) + "/data/wang2009/" + file;
-    const floating_model m = wang2009_humanoid(wang2009_preset(wang2009_saved_shape(path)));
-    wang2009_controller c(m);
-    const std::vector<double> p = load_wang2009_controller(path, c).parameters;
-    rollout_options opt = wang2009_rollout_options(m);
-    opt.duration = 15.0;
     trajectory tr;
-    opt.record = &tr;
-    opt.record_every = 40;
-    auto scratch = make_rollout_scratch(m);
-    semi_implicit_euler integ;
-    const rollout_result r =
-        rollout(m, mixed_pd_actuator{}, c, distance_objective(), flat_terrain{}, integ,
-                std::span<const double>(p), opt, scratch);
+    const rollout_result r = walk_saved(file, flat_terrain{}, 10.0, 15.0, &tr);
     INFO(file << ": " << to_string(r.reason) << " after " << r.time << " s");
     REQUIRE(r.reason == stop_reason::horizon);
+    const floating_model m = wang2009_humanoid(wang2009_preset(
+        wang2009_saved_shape(std::string(GAITSYNTH_SOURCE_DIR) + "/data/wang2009/" + file)));
     return arm_swing(m, tr, 2.0).opposite_leg_correlation;
   };
   const double with_ang =
