@@ -14,6 +14,8 @@
 //                 [--without TERM]...   (E_ratio, E_ang, ...: the term's weight set to 0)
 //                 [--weight TERM=W]...  (the term's weight of eq. 16 set to W; ours, not the
 //                 paper's: a continuation stage may press one term harder)
+//                 [--bound PARAM=LO:HI]...  (a parameter's search bounds, e.g.
+//                 s1.target.back_y=-0.25:0.25; its start value must lie inside)
 //                 [--slope DEG] [--mu MU]   (uphill along +x; ground friction, default 10)
 //   wang2009_walk --replay FILE [--check-seconds S] [--out DIR]
 //   wang2009_walk --simbicon [--check-seconds S] [--out DIR]     (the SIMBICON baseline)
@@ -83,8 +85,9 @@ struct cli {
   double push_force = 100.0;              // N
   std::vector<std::string> without;       // terms of eq. 16 left out (weight 0): Figs. 3 and 4
   std::map<std::string, double> weights;  // --weight TERM=W: weights of eq. 16 set by hand
-  double slope_deg = 0.0;                 // uphill slope along +x (Sec. 5, "Changing terrain")
-  double mu = 10.0;                       // ground friction (Sec. 4.2; 0.8 and 0.3 in Sec. 5)
+  std::map<std::string, std::pair<double, double>> bounds;  // --bound PARAM=LO:HI
+  double slope_deg = 0.0;  // uphill slope along +x (Sec. 5, "Changing terrain")
+  double mu = 10.0;        // ground friction (Sec. 4.2; 0.8 and 0.3 in Sec. 5)
   bool slope_given = false, mu_given = false;
   std::string command;  // the command line, kept in the saved controller
   viz_outputs viz;
@@ -97,7 +100,8 @@ struct cli {
                " [--check-seconds S]\n"
                "       [--horizon S] [--sigma S] [--robust-starts K] [--start-sigma S]"
                " [--robust-pushes K] [--push-force N]\n"
-               "       [--without TERM]... [--weight TERM=W]... [--slope DEG] [--mu MU]\n"
+               "       [--without TERM]... [--weight TERM=W]... [--bound PARAM=LO:HI]...\n"
+               "       [--slope DEG] [--mu MU]\n"
                "       "
             << name << " --replay CONTROLLER.json [--check-seconds S] [--out DIR]\n"
             << "       " << name << " --simbicon [--check-seconds S] [--out DIR]\n"
@@ -159,6 +163,13 @@ cli parse(int argc, char** argv) {
       const std::size_t eq = v.find('=');
       check_argument(eq != std::string::npos, "--weight wants TERM=W, got '", v, "'");
       c.weights[v.substr(0, eq)] = std::stod(v.substr(eq + 1));
+    } else if (a == "--bound") {
+      const std::string v = value();
+      const std::size_t eq = v.find('='), colon = v.find(':', eq);
+      check_argument(eq != std::string::npos && colon != std::string::npos,
+                     "--bound wants PARAM=LO:HI, got '", v, "'");
+      c.bounds[v.substr(0, eq)] = {std::stod(v.substr(eq + 1, colon - eq - 1)),
+                                   std::stod(v.substr(colon + 1))};
     } else if (a == "--slope") {
       c.slope_deg = std::stod(value());
       c.slope_given = true;
@@ -191,6 +202,7 @@ void save(const fs::path& path, const cli& c, const wang2009_controller& ctrl,
   s.info["command"] = c.command;
   s.info["without"] = c.without;
   s.info["weights"] = c.weights;
+  s.info["bounds"] = c.bounds;
   s.info["slope_deg"] = c.slope_deg;
   s.info["mu"] = c.mu;
   save_wang2009_controller(path.string(), ctrl, s);
@@ -330,6 +342,25 @@ int run_simbicon(const floating_model& m, const cli& c) {
   return 0;
 }
 
+/// The search space of Sec. 4.3 with the bounds given by --bound. \throws std::invalid_argument
+/// naming an unknown parameter, or one whose start value lies outside its new bounds.
+parameter_space search_space(const floating_model& m, const wang2009_controller& ctrl,
+                             const std::vector<double>& x0,
+                             const std::map<std::string, std::pair<double, double>>& bounds) {
+  const parameter_space space = wang2009_search_space(m, ctrl, x0);
+  if (bounds.empty()) return space;
+  std::vector<parameter_spec> specs = space.parameters();
+  for (const auto& [name, lohi] : bounds) {
+    const auto it = std::find_if(specs.begin(), specs.end(),
+                                 [&](const parameter_spec& p) { return p.name == name; });
+    check_argument(it != specs.end(), "--bound: no parameter '", name,
+                   "' (names as in a saved controller, e.g. s1.target.back_y)");
+    it->lower = lohi.first;
+    it->upper = lohi.second;
+  }
+  return parameter_space(std::move(specs));
+}
+
 /// Optimizes (unless --replay) and checks the walker on `ground`; prints the summary.
 template <class Terrain>
 int optimize_and_check(const floating_model& m, const cli& c, const wang2009_controller& ctrl,
@@ -349,7 +380,7 @@ int optimize_and_check(const floating_model& m, const cli& c, const wang2009_con
     co.seed = c.seed;
     co.stop.max_iterations = c.iterations;
     co.stop.no_improvement_iterations = 300;
-    cmaes opt_cma(wang2009_search_space(m, ctrl, x0), co);
+    cmaes opt_cma(search_space(m, ctrl, x0, c.bounds), co);
     thread_pool_evaluator pool(c.threads);
     problem_contexts ctx(problem, pool.thread_count());
     run_options ro;
