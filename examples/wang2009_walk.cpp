@@ -280,16 +280,15 @@ nlohmann::json push_off_summary(const floating_model& m, const trajectory& tr) {
   return j;
 }
 
-/// The torso's mean world pitch after the first 2 s, degrees, positive leaning forward (about
-/// world +y, atan2(R(0,2), R(2,2)), as Fig. 6's segment orientations).
+/// The torso's mean world sagittal angle (spatial/world_angles.hpp) after the first 2 s, degrees,
+/// positive leaning forward.
 nlohmann::json torso_pitch_summary(const floating_model& m, const trajectory& tr) {
   const auto b = static_cast<std::size_t>(m.body_index("torso"));
   double sum = 0.0;
   int n = 0;
   for (const trajectory_frame& f : tr.frames)
     if (f.t >= 2.0 && f.body_orientation.size() > b) {
-      const Eigen::Matrix3d R = f.body_orientation[b].normalized().toRotationMatrix();
-      sum += std::atan2(R(0, 2), R(2, 2));
+      sum += body_world_angles(f.body_orientation[b].normalized().toRotationMatrix()).sagittal;
       ++n;
     }
   if (n == 0) return nullptr;

@@ -6,8 +6,8 @@
 /// gives this "in-phase" swing and that without it "the arms are in-phase with the wrong legs".
 ///
 /// Measured here as Pearson correlations, over the frames from t_begin on, between the world
-/// sagittal pitch of each upper arm and that of each thigh (the pitch about world +y,
-/// atan2(R(0,2), R(2,2)) of R_world_body, as Fig. 6's segment orientations): opposite-leg
+/// sagittal angle of each upper arm and that of each thigh (spatial/world_angles.hpp, Sec. 3's
+/// world-frame angles): opposite-leg
 /// correlation near +1 is the human pattern, near -1 the arm swings with its own leg.
 /// Segment pitches need no joint sign convention, so any model with these four bodies works.
 #include <Eigen/Geometry>
@@ -18,6 +18,7 @@
 #include "gaitsynth/error.hpp"
 #include "gaitsynth/model/model.hpp"
 #include "gaitsynth/rollout/trajectory.hpp"
+#include "gaitsynth/spatial/world_angles.hpp"
 
 namespace gaitsynth {
 
@@ -76,8 +77,7 @@ arm_swing_report arm_swing(const model<Root>& m, const trajectory& tr, double t_
   const std::size_t nb = static_cast<std::size_t>(m.num_bodies());
   std::vector<double> pla, pra, plt, prt;
   auto pitch = [](const Eigen::Quaterniond& q) {
-    const Eigen::Matrix3d R = q.normalized().toRotationMatrix();
-    return std::atan2(R(0, 2), R(2, 2));
+    return body_world_angles(q.normalized().toRotationMatrix()).sagittal;
   };
   for (const trajectory_frame& f : tr.frames) {
     if (f.t < t_begin) continue;
