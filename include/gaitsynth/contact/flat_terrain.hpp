@@ -17,6 +17,8 @@ class flat_terrain {
   double height(double /*x*/, double /*y*/) const { return h0_; }
   vec3 normal(double /*x*/, double /*y*/) const { return vec3::UnitZ(); }
   double plane_height() const { return h0_; }
+  /// The height bound over any disc: the plane's height.
+  double max_height(double /*x*/, double /*y*/, double /*r*/) const { return h0_; }
 
  private:
   double h0_;

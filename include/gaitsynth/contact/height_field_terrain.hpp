@@ -41,6 +41,7 @@ class height_field_terrain {
                        Eigen::MatrixXd heights)
       : origin_(origin), spacing_(spacing), h_(std::move(heights)) {
     validate();
+    max_height_ = h_.maxCoeff();
   }
   /// Same grid spacing along x and y.
   height_field_terrain(const Eigen::Vector2d& origin, double spacing, Eigen::MatrixXd heights)
@@ -55,6 +56,7 @@ class height_field_terrain {
                "height_field_terrain: values (nx * ny)");
     h_ = Eigen::Map<const Eigen::MatrixXd>(values.data(), nx, ny);
     validate();
+    max_height_ = h_.maxCoeff();
   }
 
   double height(double x, double y) const {
@@ -76,6 +78,10 @@ class height_field_terrain {
     if (c.inside_y) g.y() = ((1 - c.u) * (c.h01 - c.h00) + c.u * (c.h11 - c.h10)) / spacing_.y();
     return g;
   }
+
+  /// The height bound over any disc: the highest node (the bilinear interpolant, and its
+  /// extension past the grid's edge, never exceed it).
+  double max_height(double /*x*/, double /*y*/, double /*r*/) const { return max_height_; }
 
   int nx() const { return static_cast<int>(h_.rows()); }
   int ny() const { return static_cast<int>(h_.cols()); }
@@ -141,6 +147,7 @@ class height_field_terrain {
   Eigen::Vector2d origin_;
   Eigen::Vector2d spacing_;
   Eigen::MatrixXd h_;
+  double max_height_ = 0.0;  ///< the highest node, m
 };
 
 static_assert(terrain<height_field_terrain>);

@@ -34,6 +34,15 @@
 /// Contact counts (Wang et al. 2009's objective needs "3 or more points of contact" on the stance
 /// foot or toe and "the top of the swing toe in contact"): a point touches while d > 0.
 ///
+/// Broad phase (3D path): a body whose contact points all lie within its reach r_b of its origin
+/// (the largest |point|, body frame) is skipped while its origin is more than r_b (plus 1 nm for
+/// rounding) above terrain_max_height over the disc of radius r_b below it: none of its points can
+/// touch, so the forces, anchors and counts are exactly those of the full pass. A skipped point's
+/// depth is minus its body's vertical clearance bound (negative, not its own depth along the
+/// normal), and its position and normal are not updated. The 43 body
+/// points of the Wang 2009 humanoid never touch while it walks; this keeps them nearly free.
+/// Terrains without a height bound (terrain_max_height = +infinity) skip nothing.
+///
 /// No allocation: contact_state is sized once by make_contact_state(model).
 #include <Eigen/Core>
 #include <Eigen/LU>
@@ -88,11 +97,13 @@ struct contact_state {
   std::vector<vec3> anchor;           ///< friction anchor, world, m (meaningful while active)
   std::vector<std::uint8_t> active;   ///< 1 while the point is below the terrain (d > 0)
   std::vector<std::uint8_t> sliding;  ///< 1 if friction was on the cone this step
-  std::vector<vec3> position;         ///< world position p of the point this step, m
-  std::vector<double> depth;          ///< penetration d, m (<= 0: not touching)
-  std::vector<vec3> normal;           ///< terrain normal n used this step (world)
-  std::vector<double> normal_force;   ///< f_n >= 0, N
-  std::vector<vec3> force;            ///< total contact force f = f_n n + f_t on the body, world, N
+  // position and normal are this step's for the points the broad phase did not skip (file
+  // comment); a skipped point keeps its last ones, and its depth is minus its body's clearance.
+  std::vector<vec3> position;        ///< world position p of the point this step, m
+  std::vector<double> depth;         ///< penetration d, m (<= 0: not touching)
+  std::vector<vec3> normal;          ///< terrain normal n used this step (world)
+  std::vector<double> normal_force;  ///< f_n >= 0, N
+  std::vector<vec3> force;           ///< total contact force f = f_n n + f_t on the body, world, N
   // ---- per body -----------------------------------------------------------------------------
   std::vector<int> points_touching;            ///< number of its points with d > 0
   std::vector<std::uint8_t> toe_top_touching;  ///< 1 if one of its toe_top points touches
@@ -100,8 +111,14 @@ struct contact_state {
   int total_points_touching = 0;
   bool any_toe_top_touching = false;
   // ---- cached from the model by make_contact_state ------------------------------------------
-  std::vector<double> inv_mass;         ///< per body, 1/kg
-  std::vector<mat3> inv_inertia;        ///< per body, about its COM, body axes, 1/(kg m^2)
+  std::vector<double> inv_mass;   ///< per body, 1/kg
+  std::vector<mat3> inv_inertia;  ///< per body, about its COM, body axes, 1/(kg m^2)
+  /// per body, the largest distance of its contact points from its origin, m (-1: no points)
+  std::vector<double> reach;
+  /// scratch: per body, 1 if the broad phase found it near the terrain this step
+  std::vector<std::uint8_t> near;
+  /// scratch: per body, how far its lowest possible point is above the terrain bound, m
+  std::vector<double> clearance;
   std::vector<mat3> inv_inertia_world;  ///< scratch: R I^-1 R^T of touching bodies this step
   std::vector<vec3> com_offset_world;   ///< scratch: R com of touching bodies this step, m
 
@@ -145,6 +162,13 @@ contact_state make_contact_state(const model<Root>& m) {
   s.inv_inertia.resize(nb);
   s.inv_inertia_world.assign(nb, mat3::Zero());
   s.com_offset_world.assign(nb, vec3::Zero());
+  s.reach.assign(nb, -1.0);
+  s.near.assign(nb, 1);
+  s.clearance.assign(nb, 0.0);
+  for (const contact_point& cp : m.contact_points) {
+    double& r = s.reach[static_cast<std::size_t>(cp.body)];
+    r = std::max(r, cp.position.norm());
+  }
   for (std::size_t b = 0; b < nb; ++b) {
     s.inv_mass[b] = 1.0 / m.bodies[b].mass;
     s.inv_inertia[b] = m.bodies[b].inertia.inverse();  // positive definite (model_builder)
@@ -337,11 +361,25 @@ void apply_contact_forces(const model<Root>& m, workspace<Root>& ws, const T& t,
     }
   }
 
+  // Broad phase (file comment): which bodies might touch.
+  constexpr double rounding_margin = 1e-9;  // m, far above the rounding of a point's position
+  for (int b = 0; b < s.num_bodies(); ++b) {
+    const double r = s.reach[b];
+    if (r < 0.0) continue;
+    const vec3& o = ws.body_position[b];
+    s.clearance[b] = o.z() - r - rounding_margin - terrain_max_height(t, o.x(), o.y(), r);
+    s.near[b] = !(s.clearance[b] > 0.0);  // NaN: near, so the full pass sees it
+  }
+
   // Pass 1: depths, normals and counts (the implicit damping shares each body among its touching
   // points, so counts come first).
   detail::reset_counts(s);
   for (int k = 0; k < np; ++k) {
     const contact_point& cp = m.contact_points[k];
+    if (!s.near[cp.body]) {
+      s.depth[k] = -s.clearance[cp.body];
+      continue;
+    }
     detail::record_point(cp, k, point_position(m, ws, cp.body, cp.position), t, s);
   }
 

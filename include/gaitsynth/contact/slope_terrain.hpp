@@ -45,6 +45,11 @@ class slope_terrain {
     return h0_ + grad_.x() * (x - origin_.x()) + grad_.y() * (y - origin_.y());
   }
   vec3 normal(double /*x*/, double /*y*/) const { return n_; }
+  /// The height bound over the disc of radius r around (x, y): the centre's height plus r times
+  /// the steepest slope.
+  double max_height(double x, double y, double r) const {
+    return height(x, y) + r * std::abs(std::tan(angle_));
+  }
 
   double angle() const { return angle_; }
   const Eigen::Vector2d& direction() const { return dir_; }

@@ -56,6 +56,7 @@ class steps_terrain {
         h_(std::move(heights)),
         base_(base_height) {
     validate();
+    max_height_ = std::max(base_, h_.maxCoeff());
   }
 
   /// Stairs / drops along x (planar models need nothing else): height `base_height` for
@@ -75,6 +76,7 @@ class steps_terrain {
     xe_.push_back(std::numeric_limits<double>::infinity());
     ye_ = {-std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity()};
     validate();
+    max_height_ = std::max(base_, h_.maxCoeff());
   }
 
   /// `count` steps of depth `run` and rise `rise` (m) starting at x_start from base_height; the
@@ -162,6 +164,8 @@ class steps_terrain {
   }
 
   double base_height() const { return base_; }
+  /// The height bound over any disc: the highest tread (or the base).
+  double max_height(double /*x*/, double /*y*/, double /*r*/) const { return max_height_; }
   const std::vector<double>& x_edges() const { return xe_; }
   const std::vector<double>& y_edges() const { return ye_; }
   const Eigen::MatrixXd& heights() const { return h_; }
@@ -213,6 +217,7 @@ class steps_terrain {
   std::vector<double> xe_, ye_;
   Eigen::MatrixXd h_;
   double base_;
+  double max_height_ = 0.0;  ///< the highest tread or the base, m
 };
 
 static_assert(terrain_with_penetration<steps_terrain>);

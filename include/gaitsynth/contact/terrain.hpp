@@ -17,6 +17,7 @@
 /// so that a foot running into a riser is pushed back horizontally rather than lifted onto the
 /// tread; terrain_penetration() prefers that member when it exists (resolved at compile time).
 #include <concepts>
+#include <limits>
 
 #include "gaitsynth/spatial/types.hpp"
 
@@ -39,6 +40,22 @@ template <class T>
 concept terrain_with_penetration = terrain<T> && requires(const T& t, const vec3& p) {
   { t.penetration(p) } -> std::convertible_to<surface_contact>;
 };
+
+/// Terrains that bound their height over a disc (the contact broad phase skips bodies above it).
+template <class T>
+concept terrain_with_height_bound = terrain<T> && requires(const T& t, double x, double y) {
+  { t.max_height(x, y, x) } -> std::convertible_to<double>;
+};
+
+/// An upper bound of the height of terrain `t` over the horizontal disc of radius r (m) around
+/// (x, y): no point above it is below the terrain. +infinity for a terrain that does not say.
+template <terrain T>
+inline double terrain_max_height(const T& t, double x, double y, double r) {
+  if constexpr (terrain_with_height_bound<T>)
+    return t.max_height(x, y, r);
+  else
+    return std::numeric_limits<double>::infinity();
+}
 
 /// Depth of world point `p` below terrain `t` and the direction to push it out.
 template <terrain T>
