@@ -387,6 +387,32 @@ TEST_CASE("wang2009: E_head from the head's velocity and orientation (eq. 11)",
   CHECK_THROWS_WITH(w9::head(sharon2005_human7()), Catch::Contains("head"));
 }
 
+TEST_CASE("wang2009: E_posture from the torso's tilt (ours)", "[objectives][wang2009]") {
+  const auto& m = humanoid();
+  synthetic s(m);
+  const int t = s.body("torso");
+  const w9::torso_posture posture(m);
+  // The tilt is the up vector's angle from the vertical, whichever way it leans.
+  for (const vec3& axis : {vec3(0, 1, 0), vec3(1, 0, 0), vec3(vec3(1, -1, 0).normalized())})
+    CHECK(w9::torso_posture::tilt(mat3(Eigen::AngleAxisd(0.3, axis))) == Approx(0.3));
+  CHECK(w9::torso_posture::tilt(mat3(Eigen::AngleAxisd(1.0, vec3::UnitZ()))) == 0.0);
+  CHECK(w9::torso_posture::tilt(mat3(Eigen::AngleAxisd(2.5, vec3::UnitY()))) == Approx(2.5));
+  // 0.4 rad forward for 30 steps, 0.1 rad (within eps = 0.15) for 70: Q = 0.16 on 30 of the
+  // horizon's 200 steps.
+  auto a = posture.make_accumulator(m);
+  for (int k = 0; k < 100; ++k) {
+    s.rot[t] = mat3(Eigen::AngleAxisd(k < 30 ? 0.4 : -0.1, vec3::UnitY()));
+    s.feed(posture, a, k);
+  }
+  CHECK(posture.finish(a, outcome(stop_reason::fell, 1.0, 2.0)) == Approx(0.16 * 30 / 200));
+  CHECK(a.tilt == Approx(0.1));
+  // In eq. 16 its weight is 0 unless set: the paper's objective is unchanged.
+  CHECK(wang2009_objective(m).weights()[wang2009_term::posture] == 0.0);
+  CHECK(wang2009_term_names[wang2009_term::posture] == "E_posture");
+  CHECK_THROWS_WITH(w9::torso_posture(m, {.eps_posture = -0.1}), Catch::Contains("eps_posture"));
+  CHECK_THROWS_WITH(w9::torso_posture(m, {.body = "spine"}), Catch::Contains("spine"));
+}
+
 TEST_CASE("wang2009: E_power and the cost of transport (eq. 12)", "[objectives][wang2009]") {
   const auto& m = humanoid();
   synthetic s(m);
@@ -502,10 +528,11 @@ TEST_CASE("wang2009: a standing rollout of the humanoid under the complete objec
   CHECK(r.cost >= 0.0);
   // Recorded terms: every term's running values, one column each.
   REQUIRE(tr.objective_term_names == obj.term_names());
-  const std::vector<std::string> names = {
-      "E_user",      "speed_m_s", "step_length_m", "E_vel",  "E_land",          "E_fail",
-      "E_sym",       "E_ang",     "L_z",           "E_head", "head_vx_std_m_s", "E_power",
-      "tau_squared", "E_ratio",   "r_hip",         "r_knee", "r_ankle"};
+  const std::vector<std::string> names = {"E_user",      "speed_m_s", "step_length_m",   "E_vel",
+                                          "E_land",      "E_fail",    "E_sym",           "E_ang",
+                                          "L_z",         "E_head",    "head_vx_std_m_s", "E_power",
+                                          "tau_squared", "E_ratio",   "r_hip",           "r_knee",
+                                          "r_ankle",     "E_posture", "torso_tilt_rad"};
   CHECK(tr.objective_term_names == names);
   REQUIRE(tr.frames.size() >= 2);
   for (const auto& f : tr.frames)
