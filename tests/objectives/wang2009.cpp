@@ -405,7 +405,7 @@ TEST_CASE("wang2009: E_posture from the torso's tilt (ours)", "[objectives][wang
     s.feed(posture, a, k);
   }
   CHECK(posture.finish(a, outcome(stop_reason::fell, 1.0, 2.0)) == Approx(0.16 * 30 / 200));
-  CHECK(a.tilt == Approx(0.1));
+  CHECK(w9::torso_posture::tilt(a.up) == Approx(0.1));
   // In eq. 16 its weight is 0 unless set: the paper's objective is unchanged.
   CHECK(wang2009_objective(m).weights()[wang2009_term::posture] == 0.0);
   CHECK(wang2009_term_names[wang2009_term::posture] == "E_posture");

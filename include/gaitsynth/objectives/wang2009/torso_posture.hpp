@@ -38,8 +38,8 @@ class torso_posture {
   using options = torso_posture_options;
   struct accumulator_type {
     rollout_track track;
-    double sum = 0.0;   ///< sum of Q(tilt_t; eps), rad^2
-    double tilt = 0.0;  ///< the last step's tilt, rad
+    double sum = 0.0;         ///< sum of Q(tilt_t; eps), rad^2
+    vec3 up = vec3::UnitZ();  ///< the torso's up vector at the last step (world)
   };
 
   /// `m` must have the torso body (options::body; \throws std::invalid_argument naming it).
@@ -49,15 +49,17 @@ class torso_posture {
                    "wang2009::torso_posture: eps_posture must be finite and >= 0, got ",
                    opt_.eps_posture);
     torso_ = m.body_index(opt_.body);
+    cos_eps_ = std::cos(opt_.eps_posture);
   }
   const options& opts() const { return opt_; }
   int body() const { return torso_; }
 
-  /// The angle between a body's up vector (third column of its world rotation) and +z, rad.
-  static double tilt(const mat3& R) {
-    const vec3 up = R.col(2);
-    return std::atan2(std::hypot(up.x(), up.y()), up.z());
+  /// The angle between a unit up vector and +z, rad.
+  static double tilt(const vec3& up) {
+    return std::atan2(std::sqrt(up.x() * up.x() + up.y() * up.y()), up.z());
   }
+  /// The tilt of a body with world rotation R (its up vector is R's third column), rad.
+  static double tilt(const mat3& R) { return tilt(vec3(R.col(2))); }
 
   template <root_joint Root>
   accumulator_type make_accumulator(const model<Root>& m) const {
@@ -67,8 +69,9 @@ class torso_posture {
   template <class View>
   void accumulate(accumulator_type& a, const View& v) const {
     a.track.add(v);
-    a.tilt = tilt(v.body_rotation[torso_]);
-    a.sum += thresholded_quadratic(a.tilt, opt_.eps_posture);
+    a.up = v.body_rotation[torso_].col(2);
+    // Within eps (up_z >= cos eps) Q is 0: the angle is only computed beyond it.
+    if (a.up.z() < cos_eps_) a.sum += thresholded_quadratic(tilt(a.up), opt_.eps_posture);
   }
   double finish(const accumulator_type& a, const rollout_outcome& out) const {
     const std::int64_t T = horizon_steps(out, a.track.dt, a.track.steps);
@@ -79,12 +82,13 @@ class torso_posture {
   static std::array<std::string_view, 2> term_names() { return {"E_posture", "torso_tilt_rad"}; }
   void terms(const accumulator_type& a, std::span<double> out) const {
     out[0] = finish(a, a.track.outcome());
-    out[1] = a.tilt;
+    out[1] = tilt(a.up);
   }
 
  private:
   options opt_;
   int torso_ = -1;
+  double cos_eps_ = 1.0;
 };
 
 }  // namespace gaitsynth::wang2009
