@@ -49,6 +49,7 @@
 
 #include "gaitsynth/analysis/ankle_push_off.hpp"
 #include "gaitsynth/analysis/arm_swing.hpp"
+#include "gaitsynth/analysis/torso_lean.hpp"
 #include "gaitsynth/controllers/fsm/simbicon.hpp"
 #include "gaitsynth/controllers/fsm/wang2009_json.hpp"
 #include "gaitsynth/controllers/fsm/wang2009_shape_transfer.hpp"
@@ -280,19 +281,14 @@ nlohmann::json push_off_summary(const floating_model& m, const trajectory& tr) {
   return j;
 }
 
-/// The torso's mean world sagittal angle (spatial/world_angles.hpp) after the first 2 s, degrees,
-/// positive leaning forward.
-nlohmann::json torso_pitch_summary(const floating_model& m, const trajectory& tr) {
-  const auto b = static_cast<std::size_t>(m.body_index("torso"));
-  double sum = 0.0;
-  int n = 0;
-  for (const trajectory_frame& f : tr.frames)
-    if (f.t >= 2.0 && f.body_orientation.size() > b) {
-      sum += body_world_angles(f.body_orientation[b].normalized().toRotationMatrix()).sagittal;
-      ++n;
-    }
-  if (n == 0) return nullptr;
-  return sum / n * 180.0 / std::numbers::pi;
+/// The torso's lean (analysis/torso_lean.hpp) after the first 2 s, degrees: its mean world
+/// sagittal angle (positive leaning forward) and the largest tilt from the vertical.
+void add_torso_lean(nlohmann::json& sum, const floating_model& m, const trajectory& tr) {
+  sum["torso_pitch_deg"] = nullptr;
+  if (tr.frames.empty() || tr.frames.back().t < 2.0) return;
+  const torso_lean_report t = torso_lean(m, tr, 2.0);
+  sum["torso_pitch_deg"] = t.mean_pitch * 180.0 / std::numbers::pi;
+  sum["torso_max_tilt_deg"] = t.max_tilt * 180.0 / std::numbers::pi;
 }
 
 /// Fig. 4's arm swing (analysis/arm_swing.hpp) after the first 2 s: opposite-leg correlation
@@ -336,7 +332,7 @@ int run_simbicon(const floating_model& m, const cli& c) {
   sum["controller"] = "simbicon";
   sum["ankle_push_off"] = push_off_summary(m, tr);
   sum["arm_swing"] = arm_swing_summary(m, tr);
-  sum["torso_pitch_deg"] = torso_pitch_summary(m, tr);
+  add_torso_lean(sum, m, tr);
   std::cout << sum.dump() << std::endl;
   return 0;
 }
@@ -447,7 +443,7 @@ int optimize_and_check(const floating_model& m, const cli& c, const wang2009_con
   sum["cost"] = best_cost;
   sum["ankle_push_off"] = push_off_summary(m, tr);
   sum["arm_swing"] = arm_swing_summary(m, tr);
-  sum["torso_pitch_deg"] = torso_pitch_summary(m, tr);
+  add_torso_lean(sum, m, tr);
   sum["horizon"] = c.horizon;
   sum["without"] = c.without;
   sum["weights"] = c.weights;
