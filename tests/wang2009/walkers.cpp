@@ -187,6 +187,19 @@ TEST_CASE("wang2009: the upright stocky walker pushes off and walks 100 s", "[wa
                 2.2});
 }
 
+// The upright walker asked for 0.6 m steps (1000 iterations): longer steps, the ratio and a
+// nearly upright torso kept, the push-off lost.
+TEST_CASE("wang2009: the upright walker with longer steps walks 100 s", "[wang2009][claim]") {
+  check_walker({"stocky_upright_step06.controller.json",
+                1.697,
+                0.500,
+                {0.423, 0.058, 0.519},
+                10,
+                {false, false},
+                true,
+                10.7});
+}
+
 // The same with the step-length target of the paper's slope continuation (0.65 m): the best of
 // the first 520 iterations (the run's final best falls at 18.6 s).
 TEST_CASE("wang2009: the level stocky walker for the slope continuation walks 100 s",
