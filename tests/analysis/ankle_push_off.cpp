@@ -72,6 +72,37 @@ TEST_CASE("ankle_push_off finds each stance and where its power peaks", "[analys
   cut.frames.resize(250);
   CHECK(ankle_push_off(m, cut, "lankle_y", "lfoot").stances.size() == 2u);
 
+  // The swing's snap of the ankle in the last frame of contact (dorsiflexion: tau < 0 and v < 0,
+  // 20 kW of tau * v) is not push-off: the plantarflexors' power counts only tau > 0.
+  const int lankle = floating_root::nv + m.dof_index("lankle_y");
+  trajectory snap = synthetic_walk(m, 0.3);
+  for (trajectory_frame& f : snap.frames) {
+    f.contact_force.assign(m.contact_points.size(), Eigen::Vector3d::Zero());
+    for (std::size_t i = 0; i < m.contact_points.size(); ++i)
+      if (f.contact_active[i]) f.contact_force[i] = {0.0, 0.0, 200.0};
+  }
+  for (const double t_last : {0.79, 1.79, 2.79}) {
+    trajectory_frame& f = snap.frames[static_cast<std::size_t>(std::lround(t_last * 100))];
+    f.tau[lankle] = -200.0;
+    f.v[lankle] = -100.0;
+  }
+  const ankle_push_off_report snapped = ankle_push_off(m, snap, "lankle_y", "lfoot");
+  REQUIRE(snapped.stances.size() == 3u);
+  CHECK(snapped.stances[0].t_end == Approx(0.79));
+  CHECK(snapped.mean_power_by_tenth[9] == Approx(-10.0).margin(5.0));  // the snap counts 0
+  CHECK(snapped.mean_curve_peak_fraction < 0.4);
+  // Recorded forces: a last frame whose points still touch but carry nothing is not stance.
+  for (const double t_last : {0.79, 1.79, 2.79})
+    for (auto& force :
+         snap.frames[static_cast<std::size_t>(std::lround(t_last * 100))].contact_force)
+      force.setZero();
+  const ankle_push_off_report unloaded = ankle_push_off(m, snap, "lankle_y", "lfoot");
+  REQUIRE(unloaded.stances.size() == 3u);
+  CHECK(unloaded.stances[0].t_end == Approx(0.78));
+  // Without forces in the frames, contact_active alone decides.
+  for (trajectory_frame& f : snap.frames) f.contact_force.clear();
+  CHECK(ankle_push_off(m, snap, "lankle_y", "lfoot").stances[0].t_end == Approx(0.79));
+
   CHECK_THROWS_WITH(ankle_push_off(m, cut, "lankle_q", "lfoot"), Catch::Contains("lankle_q"));
   CHECK_THROWS_WITH(ankle_push_off(m, cut, "lankle_y", "lfoot", "", 1.5),
                     Catch::Contains("late_stance must be in [0, 1], got 1.5"));

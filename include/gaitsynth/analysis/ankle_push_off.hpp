@@ -6,9 +6,16 @@
 /// 1998); Wang et al. 2009 ask their optimized walkers for it.
 ///
 /// A stance is a maximal run of recorded frames in which a sole or toe contact point of the foot
-/// or its toes touches; only stances with a swing frame on both sides count (complete ones). The
-/// ankle power is tau * qdot of the sagittal ankle DOF (plantarflexion positive in the models
-/// here, so generation by plantarflexors is positive), as recorded in the frames.
+/// or its toes touches and, when the frames record contact forces, carries force (at lift-off a
+/// point still below the ground while its damper cancels its spring carries nothing); only stances
+/// with a swing frame on both sides count (complete ones).
+///
+/// The power is the plantarflexors': tau * qdot of the sagittal ankle DOF while tau > 0, and 0
+/// while the moment dorsiflexes (plantarflexion is positive in the models here). Push-off is
+/// plantarflexor generation (tau > 0, qdot > 0). A dorsiflexing moment with a dorsiflexing
+/// velocity also makes positive tau * qdot: the swing's ankle target snapping the foot up in the
+/// last frame of contact, when the next state has begun, gives kilowatts for one frame, and with
+/// the plain product that snap, not push-off, would decide where the power peaks.
 #include <algorithm>
 #include <array>
 #include <string>
@@ -70,7 +77,11 @@ ankle_push_off_report ankle_push_off(const model<Root>& m, const trajectory& tr,
     check_argument(fr.v.size() == m.nv() && fr.tau.size() == m.nv() &&
                        fr.contact_active.size() == m.contact_points.size(),
                    "ankle_push_off: frame ", f, " does not fit model '", m.name, "'");
-    for (const int i : points) down[f] |= fr.contact_active[static_cast<std::size_t>(i)];
+    const bool forces = fr.contact_force.size() == m.contact_points.size();
+    for (const int i : points) {
+      const auto k = static_cast<std::size_t>(i);
+      down[f] |= fr.contact_active[k] && (!forces || fr.contact_force[k].squaredNorm() > 0.0);
+    }
   }
   ankle_push_off_report out;
   std::size_t f = 0;
@@ -86,7 +97,8 @@ ankle_push_off_report ankle_push_off(const model<Root>& m, const trajectory& tr,
     s.peak_power = -1e300;
     std::array<int, 10> in_tenth{};
     for (std::size_t k = b; k < f; ++k) {
-      const double p = tr.frames[k].tau[vj] * tr.frames[k].v[vj];
+      const double tau = tr.frames[k].tau[vj];
+      const double p = tau > 0.0 ? tau * tr.frames[k].v[vj] : 0.0;
       const double phase = (tr.frames[k].t - s.t_begin) / (s.t_end - s.t_begin);
       const auto tenth = static_cast<std::size_t>(std::min(9, static_cast<int>(10.0 * phase)));
       s.power_by_tenth[tenth] += p;
