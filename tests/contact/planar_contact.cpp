@@ -58,8 +58,11 @@ model<planar_root> random_planar_model_with_contacts(std::mt19937& rng, int nb) 
   return b.build();
 }
 
-void require_same_contacts(const contact_state& a, const contact_state& b,
-                           const workspace<planar_root>& wa, const workspace<planar_root>& wb) {
+/// a: the planar path; b: the general path, whose broad phase may skip a body far above the
+/// terrain (its points' positions are then not computed, and their depth is only negative).
+void require_same_contacts(const model<planar_root>& m, const contact_state& a,
+                           const contact_state& b, const workspace<planar_root>& wa,
+                           const workspace<planar_root>& wb) {
   REQUIRE(a.total_points_touching == b.total_points_touching);
   REQUIRE(a.any_toe_top_touching == b.any_toe_top_touching);
   REQUIRE(a.points_touching == b.points_touching);
@@ -68,8 +71,13 @@ void require_same_contacts(const contact_state& a, const contact_state& b,
   REQUIRE(a.sliding == b.sliding);
   for (int k = 0; k < a.num_points(); ++k) {
     CAPTURE(k);
-    REQUIRE_THAT(Eigen::MatrixXd(a.position[k]), is_approx(b.position[k], 1e-14, 1e-14));
-    REQUIRE(a.depth[k] == Approx(b.depth[k]).epsilon(1e-13).margin(1e-15));
+    if (b.near[m.contact_points[k].body]) {
+      REQUIRE_THAT(Eigen::MatrixXd(a.position[k]), is_approx(b.position[k], 1e-14, 1e-14));
+      REQUIRE(a.depth[k] == Approx(b.depth[k]).epsilon(1e-13).margin(1e-15));
+    } else {
+      REQUIRE(a.depth[k] < 0.0);
+      REQUIRE(b.depth[k] < 0.0);
+    }
     REQUIRE_THAT(Eigen::MatrixXd(a.force[k]), is_approx(b.force[k], 1e-12, 1e-12));
     if (a.active[k])
       REQUIRE_THAT(Eigen::MatrixXd(a.anchor[k]), is_approx(b.anchor[k], 1e-14, 1e-14));
@@ -104,7 +112,7 @@ void compare_paths(const Terrain& t, std::uint32_t seed) {
       clear_external_wrenches(general);
       apply_contact_forces(m, ws, t, params, fast, dt);
       apply_contact_forces(m, general, t, params, ref, dt);
-      require_same_contacts(fast, ref, ws, general);
+      require_same_contacts(m, fast, ref, ws, general);
       touching_seen += fast.total_points_touching;
       for (auto s : fast.sliding) sliding_seen += s;
       q += 0.02 * v + random_vector(rng, m.nq(), 0.002);  // drift, so anchors stretch and slide
