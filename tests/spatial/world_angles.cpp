@@ -53,3 +53,18 @@ TEST_CASE("world angles: signs agree with the humanoid's joint conventions", "[s
   CHECK((foot * vec3(1, 0, 0)).z() < 0.0);
   CHECK(body_world_angles(foot).sagittal == Approx(0.3));
 }
+
+TEST_CASE("world angles: the tilt from the vertical ignores heading and lean direction",
+          "[spatial]") {
+  for (const double heading : {0.0, 1.0, -2.5})
+    for (const double lean : {0.0, 0.3, 1.2, 2.9})
+      for (const double dir : {0.0, 0.7, 2.0, -1.5}) {
+        // Lean about a horizontal axis at angle dir, after any heading.
+        const Eigen::Vector3d axis(std::cos(dir), std::sin(dir), 0.0);
+        const Eigen::Matrix3d R =
+            (Eigen::AngleAxisd(lean, axis) * Eigen::AngleAxisd(heading, Eigen::Vector3d::UnitZ()))
+                .toRotationMatrix();
+        CHECK(gaitsynth::tilt_from_vertical(R.col(2)) == Approx(lean).margin(1e-12));
+      }
+  CHECK(gaitsynth::tilt_from_vertical(-Eigen::Vector3d::UnitZ()) == Approx(std::numbers::pi));
+}

@@ -39,8 +39,7 @@ torso_lean_report torso_lean(const model<Root>& m, const trajectory& tr, double 
                    " bodies (record body poses)");
     const mat3 R = f.body_orientation[b].normalized().toRotationMatrix();
     sum += body_world_angles(R).sagittal;
-    const vec3 up = R.col(2);
-    r.max_tilt = std::max(r.max_tilt, std::atan2(std::hypot(up.x(), up.y()), up.z()));
+    r.max_tilt = std::max(r.max_tilt, tilt_from_vertical(R.col(2)));
     ++r.frames;
   }
   check_argument(r.frames > 0, "torso_lean: no frame from t = ", t_begin, " s on");

@@ -49,6 +49,12 @@ inline world_angles body_world_angles(const mat3& R, double heading = 0.0) {
   return {std::atan2(-up.y(), up.z()), std::atan2(up.x(), up.z()), std::atan2(fwd.y(), fwd.x())};
 }
 
+/// The angle between a body's unit up vector (world; R.col(2)) and the world vertical, rad, in
+/// [0, pi]: its tilt, whichever way it leans.
+inline double tilt_from_vertical(const vec3& up) {
+  return std::atan2(std::sqrt(up.x() * up.x() + up.y() * up.y()), up.z());
+}
+
 /// The heading of a body: the transverse angle of its forward vector in the world (rad, 0 = +x).
 inline double body_heading(const mat3& R) {
   return std::atan2(R(1, 0), R(0, 0));

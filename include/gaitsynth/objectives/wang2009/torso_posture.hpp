@@ -23,6 +23,7 @@
 #include "gaitsynth/objectives/concept.hpp"
 #include "gaitsynth/objectives/wang2009/common.hpp"
 #include "gaitsynth/objectives/wang2009/thresholded_quadratic.hpp"
+#include "gaitsynth/spatial/world_angles.hpp"
 
 namespace gaitsynth::wang2009 {
 
@@ -54,10 +55,8 @@ class torso_posture {
   const options& opts() const { return opt_; }
   int body() const { return torso_; }
 
-  /// The angle between a unit up vector and +z, rad.
-  static double tilt(const vec3& up) {
-    return std::atan2(std::sqrt(up.x() * up.x() + up.y() * up.y()), up.z());
-  }
+  /// The angle between a unit up vector and +z, rad (spatial/world_angles.hpp).
+  static double tilt(const vec3& up) { return tilt_from_vertical(up); }
   /// The tilt of a body with world rotation R (its up vector is R's third column), rad.
   static double tilt(const mat3& R) { return tilt(vec3(R.col(2))); }
 
