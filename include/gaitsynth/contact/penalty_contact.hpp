@@ -350,9 +350,11 @@ template <root_joint Root, terrain T>
 void apply_contact_forces(const model<Root>& m, workspace<Root>& ws, const T& t,
                           const contact_parameters& p, contact_state& s, double dt) {
   const int np = static_cast<int>(m.contact_points.size());
-  check_argument(s.num_points() == np && s.num_bodies() == m.num_bodies(), "contact_state has ",
-                 s.num_points(), " points and ", s.num_bodies(), " bodies, but model '", m.name,
-                 "' has ", np, " and ", m.num_bodies(), " (use make_contact_state(model))");
+  check_argument(s.num_points() == np && s.num_bodies() == m.num_bodies() &&
+                     static_cast<int>(s.reach.size()) == m.num_bodies(),
+                 "contact_state has ", s.num_points(), " points and ", s.num_bodies(),
+                 " bodies, but model '", m.name, "' has ", np, " and ", m.num_bodies(),
+                 " (use make_contact_state(model))");
   check_positive(dt, "dt (time step, s)");
   if constexpr (std::is_same_v<Root, planar_root>) {
     if (ws.scratch.planar.enabled) {
