@@ -18,6 +18,8 @@
 //                 s1.target.back_y=-0.25:0.25; its start value must lie inside)
 //                 [--slope DEG] [--mu MU]   (uphill along +x; ground friction, default 10)
 //   wang2009_walk --replay FILE [--check-seconds S] [--out DIR]
+//                 (on the file's slope and friction, scored with the weights it was optimized
+//                 with; --slope, --mu, --weight and --without override them)
 //   wang2009_walk --simbicon [--check-seconds S] [--out DIR]     (the SIMBICON baseline)
 //
 // Robust optimization (beyond the paper): --robust-starts K adds K rollouts per candidate from
@@ -514,6 +516,12 @@ int main(int argc, char** argv) try {
     // A replay walks where the walker was optimized unless told otherwise.
     if (!c.replay.empty() && !c.slope_given) c.slope_deg = from.info.value("slope_deg", 0.0);
     if (!c.replay.empty() && !c.mu_given) c.mu = from.info.value("mu", 10.0);
+    // ... and is scored with the weights it was optimized with (its saved cost is comparable),
+    // unless the command line sets weights of its own.
+    if (!c.replay.empty() && c.weights.empty() && c.without.empty()) {
+      c.weights = from.info.value("weights", std::map<std::string, double>{});
+      c.without = from.info.value("without", std::vector<std::string>{});
+    }
   }
   ctrl.bind(x0);
   wang2009_objective_options oo;
