@@ -97,6 +97,10 @@
 #include "gaitsynth/optimizers/sds.hpp"
 #include "gaitsynth/optimizers/test_functions.hpp"
 
+#include "gaitsynth/qp/dense_qp.hpp"
+#include "gaitsynth/qp/goldfarb_idnani.hpp"
+#include "gaitsynth/qp/kkt.hpp"
+
 #include "gaitsynth/synthesis/nearest_neighbor_synthesis.hpp"
 
 #include "gaitsynth/models/anthropometry.hpp"

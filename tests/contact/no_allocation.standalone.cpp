@@ -2,27 +2,10 @@
 // binary replaces every form of the global operator new / delete with counting versions, and
 // builds Eigen with EIGEN_RUNTIME_NO_MALLOC and an eigen_assert that counts instead of aborting
 // (Eigen allocates dynamic matrices through malloc, not operator new).
-#include <atomic>
-#include <cstdlib>
-#include <new>
-
-namespace {
-std::atomic<long> g_news{0};
-std::atomic<long> g_eigen_asserts{0};
-}  // namespace
-inline void gaitsynth_e1_count_eigen_assert() {
-  ++g_eigen_asserts;
-}
-#define EIGEN_RUNTIME_NO_MALLOC
-#define eigen_assert(x)                                           \
-  do {                                                            \
-    if (!static_cast<bool>(x)) gaitsynth_e1_count_eigen_assert(); \
-  } while (false)
+#include "support/counting_allocations.hpp"
 
 #include <catch2/catch.hpp>
-
 #include <vector>
-
 #include "gaitsynth/contact/flat_terrain.hpp"
 #include "gaitsynth/contact/height_field_terrain.hpp"
 #include "gaitsynth/contact/penalty_contact.hpp"
@@ -31,77 +14,6 @@ inline void gaitsynth_e1_count_eigen_assert() {
 #include "gaitsynth/contact/steps_terrain.hpp"
 #include "gaitsynth/models/standing.hpp"
 #include "gaitsynth/models/wang2009.hpp"
-
-namespace {
-// malloc and free out of line, so that GCC does not see a malloc'd pointer reach operator delete
-// (a false -Wmismatched-new-delete). Every form goes through these two, so that sanitizers see
-// matching malloc / free pairs.
-[[gnu::noinline]] void* acquire(std::size_t n) noexcept {
-  ++g_news;
-  return std::malloc(n ? n : 1);
-}
-[[gnu::noinline]] void* acquire_aligned(std::size_t n, std::align_val_t a) noexcept {
-  ++g_news;
-  const std::size_t al = static_cast<std::size_t>(a);
-  return std::aligned_alloc(al, (n + al - 1) / al * al);
-}
-[[gnu::noinline]] void release(void* p) noexcept {
-  std::free(p);
-}
-void* checked(void* p) {
-  if (!p) throw std::bad_alloc();
-  return p;
-}
-}  // namespace
-
-void* operator new(std::size_t n) {
-  return checked(acquire(n));
-}
-void* operator new[](std::size_t n) {
-  return checked(acquire(n));
-}
-void* operator new(std::size_t n, const std::nothrow_t&) noexcept {
-  return acquire(n);
-}
-void* operator new[](std::size_t n, const std::nothrow_t&) noexcept {
-  return acquire(n);
-}
-void* operator new(std::size_t n, std::align_val_t a) {
-  return checked(acquire_aligned(n, a));
-}
-void* operator new[](std::size_t n, std::align_val_t a) {
-  return checked(acquire_aligned(n, a));
-}
-void operator delete(void* p) noexcept {
-  release(p);
-}
-void operator delete[](void* p) noexcept {
-  release(p);
-}
-void operator delete(void* p, std::size_t) noexcept {
-  release(p);
-}
-void operator delete[](void* p, std::size_t) noexcept {
-  release(p);
-}
-void operator delete(void* p, const std::nothrow_t&) noexcept {
-  release(p);
-}
-void operator delete[](void* p, const std::nothrow_t&) noexcept {
-  release(p);
-}
-void operator delete(void* p, std::align_val_t) noexcept {
-  release(p);
-}
-void operator delete[](void* p, std::align_val_t) noexcept {
-  release(p);
-}
-void operator delete(void* p, std::size_t, std::align_val_t) noexcept {
-  release(p);
-}
-void operator delete[](void* p, std::size_t, std::align_val_t) noexcept {
-  release(p);
-}
 
 using namespace gaitsynth;
 
@@ -133,17 +45,7 @@ counts allocations_in_steps(const floating_model& m, const T& ground, double gro
 }  // namespace
 
 TEST_CASE("contact forces and pushes do not allocate", "[contact][allocation]") {
-  {  // the counters see allocations
-    const long news = g_news.load(), eigen = g_eigen_asserts.load();
-    std::vector<int>* probe = new std::vector<int>(10);
-    CHECK(g_news.load() >= news + 2);
-    delete probe;
-    Eigen::internal::set_is_malloc_allowed(false);
-    Eigen::VectorXd x(7);
-    Eigen::internal::set_is_malloc_allowed(true);
-    CHECK(g_eigen_asserts.load() > eigen);
-    x.setZero();
-  }
+  CHECK(counters_see_allocations());
   const auto m = wang2009_humanoid();
   const auto check = [](counts c) {
     CHECK(c.news == 0);
