@@ -200,6 +200,22 @@ TEST_CASE("wang2009: the upright walker after the 0.4 m step stage walks 100 s",
                 6.9});
 }
 
+// Ours: the 0.4 m step walker with c_trans raised stage by stage from -0.05 to 0.026 m (two
+// perturbed starts in every cost; data/wang2009/runs/stocky_upright_ctrans/). State 1 now begins
+// once the COM is past the stance ankle, and the plantarflexors' power peaks at 50-60 % of
+// stance on both sides: the late-stance push-off of claim 2, with the human ratio.
+TEST_CASE("wang2009: the push-off walker walks 100 s and pushes off in late stance",
+          "[wang2009][claim]") {
+  check_walker({"stocky_push_off.controller.json",
+                1.769,
+                0.302,
+                {0.434, 0.044, 0.521},
+                10,
+                {true, true},
+                true,
+                -1.5});
+}
+
 // The upright walker asked for 0.6 m steps at once (1000 iterations): longer steps, the ratio
 // and a nearly upright torso kept.
 TEST_CASE("wang2009: the upright walker with longer steps walks 100 s", "[wang2009][claim]") {
