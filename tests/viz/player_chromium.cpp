@@ -1,8 +1,9 @@
 // The HTML player in a real browser: headless Chromium loads the written file (no network), runs
 // its script, and the page reports in <div id="status"> whether a JavaScript error happened and
 // whether the canvas (and the character alone) is non-blank after a few frames; a screenshot is
-// saved to <build>/viz_outputs/player.png. Skipped, with a message, when Chromium is not installed
-// (scripts/test.sh installs Debian's `chromium`). One browser launch, ~5 s.
+// saved to <build>/viz_outputs/player.png. That line is for tests: it stays hidden from people
+// unless the page is opened with ?selftest. Skipped, with a message, when Chromium is not
+// installed (scripts/test.sh installs Debian's `chromium`). Two browser launches, ~5 s each.
 #include <catch2/catch.hpp>
 
 #include <cstdio>
@@ -54,14 +55,17 @@ std::string tail(const std::string& s, std::size_t n = 3000) {
   return s.size() <= n ? s : s.substr(s.size() - n);
 }
 
-/// One headless Chromium run on a written page: its DOM after the page's script ran, its log, and
-/// the status line the page wrote after checking itself (empty when there is none).
+/// One headless Chromium run on a written page: its DOM after the page's script ran, its log, the
+/// status line the page wrote after checking itself and the start tag of the element that holds
+/// it (both empty when there is none).
 struct chromium_run {
-  std::string command, page, messages, status;
+  std::string command, page, messages, status, status_tag;
   int rc = -1;
 };
 
-chromium_run run_chromium(const std::string& chromium, const fs::path& html, const fs::path& png) {
+/// `query` is appended to the page's file:// address (e.g. "?selftest").
+chromium_run run_chromium(const std::string& chromium, const fs::path& html, const fs::path& png,
+                          const std::string& query = "") {
   const fs::path dom = fs::path(html).replace_extension(".dom.html");
   const fs::path log = fs::path(html).replace_extension(".chromium.log");
   for (const auto& p : {png, dom, log}) fs::remove(p);
@@ -79,7 +83,8 @@ chromium_run run_chromium(const std::string& chromium, const fs::path& html, con
               png.string() +
               "' --window-size=1280,800 --virtual-time-budget=3000"
               " --dump-dom 'file://" +
-              fs::absolute(html).string() + "' > '" + dom.string() + "' 2> '" + log.string() + "'";
+              fs::absolute(html).string() + query + "' > '" + dom.string() + "' 2> '" +
+              log.string() + "'";
   r.rc = std::system(r.command.c_str());
   fs::remove_all(profile);
   r.page = read_file(dom);
@@ -88,6 +93,7 @@ chromium_run run_chromium(const std::string& chromium, const fs::path& html, con
   const auto a = r.page.find(open);
   if (a != std::string::npos) {
     const auto b = r.page.find('>', a), e = r.page.find("</div>", a);
+    r.status_tag = r.page.substr(a, b + 1 - a);
     r.status = r.page.substr(b + 1, e - b - 1);
   }
   return r;
@@ -122,6 +128,11 @@ TEST_CASE("HTML player runs in headless Chromium without errors and draws",
   CHECK(r.status.find("nonblank=1") != std::string::npos);
   CHECK(r.status.find("error") == std::string::npos);
   CHECK(r.messages.find("Uncaught") == std::string::npos);
+  // ... which people do not see: the element keeps its `hidden` attribute after the script ran,
+  // and the page measured the line as taking no space (shown=0).
+  INFO("status element: " << r.status_tag);
+  CHECK(r.status_tag.find(" hidden") != std::string::npos);
+  CHECK(r.status.find(" shown=0") != std::string::npos);
 
   // A PNG of the requested size.
   const std::string img = read_file(png);
@@ -137,6 +148,7 @@ TEST_CASE("HTML player runs in headless Chromium without errors and draws",
   CHECK(be32(20) == 800u);   // IHDR height
 }
 
+// Also opens the page with ?selftest, which shows the self-check line to people.
 TEST_CASE("HTML player with non-finite data (null in its JSON) runs in headless Chromium",
           "[viz][html][chromium]") {
   const std::string chromium = find_chromium();
@@ -161,11 +173,15 @@ TEST_CASE("HTML player with non-finite data (null in its JSON) runs in headless 
   traj.terrain.dx = traj.terrain.dy = 1;
   traj.terrain.height = {0, 0, 0, 0, nan, 0, 0, 0, inf};
   save_html_player(m, traj, html.string(), {.autoplay = false});
-  const chromium_run r = run_chromium(chromium, html, png);
+  const chromium_run r = run_chromium(chromium, html, png, "?selftest");
   INFO("command: " << r.command);
   INFO("chromium log (tail):\n" << tail(r.messages));
   REQUIRE(r.rc == 0);
   INFO("status: " << r.status);
   CHECK(r.status.rfind("ok ", 0) == 0);
   CHECK(r.messages.find("Uncaught") == std::string::npos);
+  // Opened with ?selftest, the page shows its self-check line.
+  INFO("status element: " << r.status_tag);
+  CHECK(r.status_tag.find("hidden") == std::string::npos);
+  CHECK(r.status.find(" shown=1") != std::string::npos);
 }

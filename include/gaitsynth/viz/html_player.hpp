@@ -12,9 +12,10 @@
 /// (cycles between heel strikes, gait_cycles.hpp) and the objective terms against time.
 ///
 /// The page checks itself: after a few animation frames it reads the canvas pixels and writes
-/// "ok frames=N nonblank=1 character_px=a/b/c" into <div id="status"> (or "error: ..." when a
-/// script error happened, caught by window.onerror), which tests read with headless Chromium's
-/// --dump-dom (tests/viz/player_chromium.cpp). docs/viewer.md.
+/// "ok frames=N nonblank=1 character_px=a/b/c ..." into <div id="status" hidden> (or "error: ..."
+/// when a script error happened, caught by window.onerror), which tests read with headless
+/// Chromium's --dump-dom (tests/viz/player_chromium.cpp). The line is hidden from people unless
+/// the page is opened with ?selftest or a script error happened. docs/viewer.md.
 ///
 /// The page is assembled here from parts kept in files of their own: the script, style and
 /// markup (player/player.js, player.css, player_body.html, embedded by player/assets.hpp, which

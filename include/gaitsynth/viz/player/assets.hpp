@@ -74,7 +74,10 @@ R"gs(<!-- The HTML player's controls and canvases, after the page header (viz/ht
   </div>
  </div>
 </div>
-<div id="status">loading</div>
+<!-- The page's self-check line (player.js), for tests and scripts that read the DOM: hidden from
+     people unless the page is opened with ?selftest (player.html?selftest) or a script error
+     happened. -->
+<div id="status" hidden>loading</div>
 )gs",
 };
 
@@ -87,15 +90,19 @@ R"gs(// The HTML player's script. viz/html_player.hpp writes it into every page 
 // draws on the canvases of player_body.html. No library, no module, nothing fetched: the page
 // has to work opened from disk. After a few frames it checks its own pixels and writes the result
 // into the element with id "status", which tests/viz/player_chromium.cpp reads from headless
-// Chromium.
+// Chromium. That element is hidden (its `hidden` attribute): people see it only when the page is
+// opened with ?selftest in its address, or when a script error happened (the page then does not
+// work, and the message says why).
 (function () {
 'use strict';
 var statusEl = document.getElementById('status');
+if (new URLSearchParams(location.search).has('selftest')) statusEl.hidden = false;
 var errors = [];
 function reportError(msg) {
   errors.push(String(msg));
   statusEl.textContent = 'error: ' + errors.join(' | ');
   statusEl.className = 'err';
+  statusEl.hidden = false;
 }
 window.onerror = function (msg, src, line, col) { reportError(msg + ' (line ' + line + ':' + col + ')'); return false; };
 window.addEventListener('unhandledrejection', function (e) { reportError('unhandled rejection: ' + e.reason); });
@@ -316,12 +323,12 @@ function drawOverlays(ctx, C, fi) {
     var p = vec3(D.cp, fi, k, NC), on = D.ca[fi * NC + k] === 1;
     var s = project(C, p);
     if (!s) continue;
-    ctx.beginPath(); ctx.arc(s[0], s[1], on ? 4 : 2.5, 0, 2 * Math.PI);
+)gs",
+R"gs(    ctx.beginPath(); ctx.arc(s[0], s[1], on ? 4 : 2.5, 0, 2 * Math.PI);
     if (on) { ctx.fillStyle = '#d62728'; ctx.fill(); } else { ctx.strokeStyle = 'rgba(60,60,60,0.7)'; ctx.lineWidth = 1; ctx.stroke(); }
     if (showF && on) {
       var F = vec3(D.cf, fi, k, NC);
-)gs",
-R"gs(      arrow(ctx, C, p, add(p, scl(F, D.force_scale)), 'rgba(20,150,40,0.9)', 2);
+      arrow(ctx, C, p, add(p, scl(F, D.force_scale)), 'rgba(20,150,40,0.9)', 2);
     }
   }
   if (showF) {
@@ -508,16 +515,16 @@ view.addEventListener('pointerup', function () { drag = null; view.style.cursor 
 view.addEventListener('wheel', function (e) { cam.dist = Math.max(0.3, Math.min(200, cam.dist * Math.exp(e.deltaY * 0.001))); e.preventDefault(); }, { passive: false });
 // joint checkboxes
 var jointsDiv = document.getElementById('joints');
-D.joint_names.forEach(function (n, j) {
+)gs",
+R"gs(D.joint_names.forEach(function (n, j) {
   var lab = document.createElement('label'), cb = document.createElement('input');
   cb.type = 'checkbox'; cb.checked = D.plot_joints.indexOf(j) >= 0;
-)gs",
-R"gs(  cb.onchange = function () { selected = []; jointsDiv.querySelectorAll('input').forEach(function (c, k) { if (c.checked) selected.push(k); }); };
+  cb.onchange = function () { selected = []; jointsDiv.querySelectorAll('input').forEach(function (c, k) { if (c.checked) selected.push(k); }); };
   lab.appendChild(cb); lab.appendChild(document.createTextNode(' ' + n)); jointsDiv.appendChild(lab);
 });
 selected = D.plot_joints.slice();
 
-// ---- self check (read by tests through --dump-dom) -----------------------
+// ---- self check (read by tests through --dump-dom; hidden from people) -----
 var checked = false;
 function countPixels(ctx, W, H, bg) {
   var px = ctx.getImageData(0, 0, W, H).data, n = 0;
@@ -546,8 +553,10 @@ function selfCheck() {
     cam.target = saved;
     var nonblank = differ > 200 ? 1 : 0, character = Math.min.apply(null, counts) > 50;
     if (errors.length) return;
+    // shown=1 when the line takes space on the page (shown to people), 0 while it is hidden.
+    var shown = statusEl.getClientRects().length > 0 ? 1 : 0;
     statusEl.textContent = (nonblank && character ? 'ok' : 'blank') + ' frames=' + framesRendered + ' nonblank=' + nonblank +
-                           ' character_px=' + counts.join('/') + ' data_frames=' + NF;
+                           ' character_px=' + counts.join('/') + ' data_frames=' + NF + ' shown=' + shown;
     statusEl.className = nonblank && character ? '' : 'err';
   } catch (e) { reportError('self check: ' + e); }
 }

@@ -5,15 +5,19 @@
 // draws on the canvases of player_body.html. No library, no module, nothing fetched: the page
 // has to work opened from disk. After a few frames it checks its own pixels and writes the result
 // into the element with id "status", which tests/viz/player_chromium.cpp reads from headless
-// Chromium.
+// Chromium. That element is hidden (its `hidden` attribute): people see it only when the page is
+// opened with ?selftest in its address, or when a script error happened (the page then does not
+// work, and the message says why).
 (function () {
 'use strict';
 var statusEl = document.getElementById('status');
+if (new URLSearchParams(location.search).has('selftest')) statusEl.hidden = false;
 var errors = [];
 function reportError(msg) {
   errors.push(String(msg));
   statusEl.textContent = 'error: ' + errors.join(' | ');
   statusEl.className = 'err';
+  statusEl.hidden = false;
 }
 window.onerror = function (msg, src, line, col) { reportError(msg + ' (line ' + line + ':' + col + ')'); return false; };
 window.addEventListener('unhandledrejection', function (e) { reportError('unhandled rejection: ' + e.reason); });
@@ -433,7 +437,7 @@ D.joint_names.forEach(function (n, j) {
 });
 selected = D.plot_joints.slice();
 
-// ---- self check (read by tests through --dump-dom) -----------------------
+// ---- self check (read by tests through --dump-dom; hidden from people) -----
 var checked = false;
 function countPixels(ctx, W, H, bg) {
   var px = ctx.getImageData(0, 0, W, H).data, n = 0;
@@ -462,8 +466,10 @@ function selfCheck() {
     cam.target = saved;
     var nonblank = differ > 200 ? 1 : 0, character = Math.min.apply(null, counts) > 50;
     if (errors.length) return;
+    // shown=1 when the line takes space on the page (shown to people), 0 while it is hidden.
+    var shown = statusEl.getClientRects().length > 0 ? 1 : 0;
     statusEl.textContent = (nonblank && character ? 'ok' : 'blank') + ' frames=' + framesRendered + ' nonblank=' + nonblank +
-                           ' character_px=' + counts.join('/') + ' data_frames=' + NF;
+                           ' character_px=' + counts.join('/') + ' data_frames=' + NF + ' shown=' + shown;
     statusEl.className = nonblank && character ? '' : 'err';
   } catch (e) { reportError('self check: ' + e); }
 }
