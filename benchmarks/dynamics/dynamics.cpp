@@ -24,7 +24,8 @@ struct fixture {
   Eigen::VectorXd q, v, tau, a;
   explicit fixture(model<Root> model_) : m(std::move(model_)), ws(make_workspace(m)) {
     std::mt19937 rng(42);
-    q = random_configuration(m, rng);
+    std::mt19937_64 configuration_rng(42);  // random_configuration takes the portable engine
+    q = random_configuration(m, configuration_rng);
     std::uniform_real_distribution<double> u(-1.0, 1.0);
     v.resize(m.nv());
     tau.resize(m.nv());

@@ -47,8 +47,9 @@ TEST_CASE("aba with an armature solves (M + diag(0, a)) ddq = tau - C", "[dynami
   const floating_model m = wang2009_humanoid();
   auto ws = make_workspace(m);
   std::mt19937 rng(7);
+  std::mt19937_64 configuration_rng(7);  // random_configuration takes the portable engine
   std::uniform_real_distribution<double> u(-1.0, 1.0);
-  Eigen::VectorXd q = random_configuration(m, rng);
+  Eigen::VectorXd q = random_configuration(m, configuration_rng);
   Eigen::VectorXd v(m.nv()), tau(m.nv()), a(m.num_joint_dofs());
   for (int i = 0; i < m.nv(); ++i) {
     v[i] = 2.0 * u(rng);

@@ -20,6 +20,7 @@ void random_wrenches(std::mt19937& rng, workspace<Root>& ws) {
 TEMPLATE_TEST_CASE("aba equals M^-1 (tau - bias + J^T f_ext) on random trees", "[dynamics][aba]",
                    planar_root, floating_root, fixed_root) {
   std::mt19937 rng(1234);
+  std::mt19937_64 configuration_rng(1234);  // random_configuration takes the portable engine
   for (int trial = 0; trial < 12; ++trial) {
     gaitsynth::testing::random_model_options o;
     o.num_bodies = 1 + trial % 9;
@@ -27,7 +28,7 @@ TEMPLATE_TEST_CASE("aba equals M^-1 (tau - bias + J^T f_ext) on random trees", "
     o.random_axes = trial % 3 != 0;
     const auto m = gaitsynth::testing::random_model<TestType>(rng, o);
     auto ws = make_workspace(m);
-    const Eigen::VectorXd q = random_configuration(m, rng);
+    const Eigen::VectorXd q = random_configuration(m, configuration_rng);
     const Eigen::VectorXd v = gaitsynth::testing::random_vector(rng, m.nv(), 2.0);
     const Eigen::VectorXd tau = gaitsynth::testing::random_vector(rng, m.nv(), 10.0);
     CAPTURE(trial, m.nv());
@@ -65,10 +66,11 @@ TEMPLATE_TEST_CASE("aba equals M^-1 (tau - bias + J^T f_ext) on random trees", "
 TEMPLATE_TEST_CASE("aba gives the same result with a fresh workspace (kinematics cache)",
                    "[dynamics][aba]", planar_root, floating_root, fixed_root) {
   std::mt19937 rng(99);
+  std::mt19937_64 configuration_rng(99);  // random_configuration takes the portable engine
   const auto m = gaitsynth::testing::random_model<TestType>(rng);
   auto ws = make_workspace(m);
   for (int trial = 0; trial < 5; ++trial) {
-    const Eigen::VectorXd q = random_configuration(m, rng);
+    const Eigen::VectorXd q = random_configuration(m, configuration_rng);
     const Eigen::VectorXd v = gaitsynth::testing::random_vector(rng, m.nv());
     const Eigen::VectorXd tau = gaitsynth::testing::random_vector(rng, m.nv());
     // Interleave calls that use the cache in different ways.
@@ -144,12 +146,13 @@ TEST_CASE("double pendulum matches the textbook equations of motion", "[dynamics
 
 TEST_CASE("a free rigid body falls with g and spins by Euler's equations", "[dynamics][aba][analytic]") {
   std::mt19937 rng(7);
+  std::mt19937_64 configuration_rng(7);  // random_configuration takes the portable engine
   model_builder<floating_root> b("brick");
   const mat3 I = gaitsynth::testing::random_inertia(rng, 0.3);
   b.add_body({.name = "brick", .mass = 2.5, .inertia = I});  // COM at the body origin
   const auto m = b.build();
   auto ws = make_workspace(m);
-  Eigen::VectorXd q = random_configuration(m, rng);
+  Eigen::VectorXd q = random_configuration(m, configuration_rng);
   Eigen::VectorXd v = gaitsynth::testing::random_vector(rng, 6, 3.0);
   const Eigen::VectorXd tau = Eigen::VectorXd::Zero(6);
   const Eigen::VectorXd ddq = aba(m, ws, q, v, tau);
@@ -200,9 +203,10 @@ TEST_CASE("dynamics are invariant under translating the whole system far from th
           "[dynamics][aba]") {
   // The algorithms work about the root origin, so a walker 1 km away loses no precision.
   std::mt19937 rng(123);
+  std::mt19937_64 configuration_rng(123);  // random_configuration takes the portable engine
   const auto m = gaitsynth::testing::random_model<floating_root>(rng, {.num_bodies = 8});
   auto ws = make_workspace(m);
-  Eigen::VectorXd q = random_configuration(m, rng);
+  Eigen::VectorXd q = random_configuration(m, configuration_rng);
   const Eigen::VectorXd v = gaitsynth::testing::random_vector(rng, m.nv());
   const Eigen::VectorXd tau = gaitsynth::testing::random_vector(rng, m.nv());
   forward_kinematics(m, ws, q, v);

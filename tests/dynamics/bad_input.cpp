@@ -10,9 +10,10 @@ using namespace gaitsynth;
 
 TEST_CASE("wrong-sized q, v, tau, a and Jacobians are rejected with the sizes", "[dynamics][errors]") {
   std::mt19937 rng(1);
+  std::mt19937_64 configuration_rng(1);  // random_configuration takes the portable engine
   const auto m = gaitsynth::testing::random_model<floating_root>(rng);
   auto ws = make_workspace(m);
-  const Eigen::VectorXd q = random_configuration(m, rng);
+  const Eigen::VectorXd q = random_configuration(m, configuration_rng);
   const Eigen::VectorXd v = Eigen::VectorXd::Zero(m.nv());
   const Eigen::VectorXd bad(3);
   using Catch::Contains;

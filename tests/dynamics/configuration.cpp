@@ -1,7 +1,11 @@
 // Configuration operations: quaternion integration with body-frame angular velocity, the
 // difference as its inverse, normalization and random configurations.
 #include <catch2/catch.hpp>
+#include <cstdint>
+#include <numbers>
+#include <random>
 
+#include "gaitsynth/detail/standard_normal.hpp"
 #include "gaitsynth/dynamics.hpp"
 #include "support/dynamics_support.hpp"
 
@@ -11,9 +15,10 @@ using gaitsynth::testing::is_approx;
 TEMPLATE_TEST_CASE("integrate and difference are inverse", "[dynamics][configuration]", planar_root,
                    floating_root, fixed_root) {
   std::mt19937 rng(8);
+  std::mt19937_64 configuration_rng(8);  // random_configuration takes the portable engine
   const auto m = gaitsynth::testing::random_model<TestType>(rng);
   for (int trial = 0; trial < 10; ++trial) {
-    const Eigen::VectorXd q = random_configuration(m, rng);
+    const Eigen::VectorXd q = random_configuration(m, configuration_rng);
     const Eigen::VectorXd v = gaitsynth::testing::random_vector(rng, m.nv(), 1.0);
     Eigen::VectorXd q1(m.nq()), v1(m.nv());
     integrate_configuration(m, q, v, 0.7, q1);
@@ -50,17 +55,28 @@ TEST_CASE("floating root: body-frame angular velocity rotates about the body axe
 }
 
 TEST_CASE("normalize_configuration and random_configuration", "[dynamics][configuration]") {
-  std::mt19937 rng(9);
+  std::mt19937_64 rng(9);
   model_builder<floating_root> b("limited");
   b.add_body({.name = "pelvis", .mass = 1, .inertia = 0.1 * mat3::Identity()});
-  b.add_body({.name = "leg", .parent = "pelvis", .mass = 1, .inertia = 0.1 * mat3::Identity(),
-              .dofs = {{.name = "hip", .limit = {.lower = -0.5, .upper = 1.0}}}});
+  b.add_body({.name = "leg",
+              .parent = "pelvis",
+              .mass = 1,
+              .inertia = 0.1 * mat3::Identity(),
+              .dofs = {{.name = "hip", .limit = {.lower = -0.5, .upper = 1.0}},
+                       {.name = "knee", .limit = {.lower = -2.0, .upper = 4.0}},
+                       {.name = "free"}}});
   const auto m = b.build();
+  constexpr double pi = std::numbers::pi;
   for (int i = 0; i < 100; ++i) {
     const Eigen::VectorXd q = random_configuration(m, rng);
     REQUIRE(q.segment<4>(3).norm() == Approx(1.0).epsilon(1e-15));
+    REQUIRE(q.head<3>().cwiseAbs().maxCoeff() <= 1.0);
     REQUIRE(q[7] >= -0.5);
     REQUIRE(q[7] <= 1.0);
+    REQUIRE(q[8] >= -2.0);  // limit [-2, 4] clipped to [-2, pi]
+    REQUIRE(q[8] <= pi);
+    REQUIRE(q[9] >= -pi);  // default limits (+-1e9) clipped to [-pi, pi]
+    REQUIRE(q[9] <= pi);
   }
   Eigen::VectorXd q = neutral_configuration(m);
   q.segment<4>(3) << 2, 0, 0, 0;
@@ -68,4 +84,73 @@ TEST_CASE("normalize_configuration and random_configuration", "[dynamics][config
   REQUIRE(q.segment<4>(3) == Eigen::Vector4d(1, 0, 0, 0));
   q.segment<4>(3).setZero();
   REQUIRE_THROWS_WITH(normalize_configuration(m, q), Catch::Contains("quaternion has norm 0"));
+}
+
+// random_configuration must give the same numbers for the same seed on every standard library, so
+// its values are pinned to the engine's raw output (fixed by the standard) through the documented
+// formula u = (raw >> 11) 2^-53, never to a std:: distribution.
+TEST_CASE("random_configuration draws are pinned to the engine's raw output",
+          "[dynamics][configuration]") {
+  constexpr double pi = std::numbers::pi;
+  auto uniform01_of = [](std::uint64_t raw) { return static_cast<double>(raw >> 11) * 0x1.0p-53; };
+
+  SECTION("the standard's own check value") {
+    // [rand.predef]: the 10000th output of a default-constructed std::mt19937_64 is
+    // 9981545732273789042, so this value holds whatever engine implementation is linked.
+    model_builder<fixed_root> b("one_joint");
+    b.add_body({.name = "base", .mass = 1, .inertia = 0.1 * mat3::Identity()});
+    b.add_body({.name = "link",
+                .parent = "base",
+                .mass = 1,
+                .inertia = 0.1 * mat3::Identity(),
+                .dofs = {{.name = "hinge", .limit = {.lower = -0.5, .upper = 1.0}}}});
+    const auto m = b.build();
+    std::mt19937_64 rng;
+    rng.discard(9999);
+    const Eigen::VectorXd q = random_configuration(m, rng);
+    const double u = uniform01_of(9981545732273789042ull);
+    REQUIRE(u == 0x1.150b25eb02fdbp-1);  // 4873801627086811 * 2^-53 = 0.54110067838473...
+    REQUIRE(q[0] == -0.5 + 1.5 * u);
+  }
+
+  SECTION("planar root: x, z, pitch, then the joints, one raw draw each") {
+    model_builder<planar_root> b("planar_two_joints");
+    b.add_body({.name = "trunk", .mass = 1, .inertia = 0.1 * mat3::Identity()});
+    b.add_body({.name = "leg",
+                .parent = "trunk",
+                .mass = 1,
+                .inertia = 0.1 * mat3::Identity(),
+                .dofs = {{.name = "hip", .limit = {.lower = -0.5, .upper = 1.0}},
+                         {.name = "knee", .limit = {.lower = -2.5, .upper = 0.0}}}});
+    const auto m = b.build();
+    std::mt19937_64 rng(2009), raw(2009);
+    const Eigen::VectorXd q = random_configuration(m, rng);
+    REQUIRE(q[0] == -1.0 + 2.0 * uniform01_of(raw()));
+    REQUIRE(q[1] == -1.0 + 2.0 * uniform01_of(raw()));
+    REQUIRE(q[2] == pi * (-1.0 + 2.0 * uniform01_of(raw())));
+    REQUIRE(q[3] == -0.5 + 1.5 * uniform01_of(raw()));
+    REQUIRE(q[4] == -2.5 + 2.5 * uniform01_of(raw()));
+    REQUIRE(rng == raw);  // nothing else was drawn
+  }
+
+  SECTION("floating root: translation, the shared normal draw for the quaternion, joints") {
+    model_builder<floating_root> b("floating_one_joint");
+    b.add_body({.name = "pelvis", .mass = 1, .inertia = 0.1 * mat3::Identity()});
+    b.add_body({.name = "leg",
+                .parent = "pelvis",
+                .mass = 1,
+                .inertia = 0.1 * mat3::Identity(),
+                .dofs = {{.name = "hip", .limit = {.lower = -0.5, .upper = 1.0}}}});
+    const auto m = b.build();
+    std::mt19937_64 rng(7), raw(7);
+    const Eigen::VectorXd q = random_configuration(m, rng);
+    for (int i = 0; i < 3; ++i) REQUIRE(q[i] == -1.0 + 2.0 * uniform01_of(raw()));
+    // The optimizers' Box-Muller draw (two raw outputs per pair of normals), normalized.
+    Eigen::Vector4d gauss;
+    detail::fill_standard_normal(raw, gauss);
+    const Eigen::Vector4d unit = gauss.normalized();
+    REQUIRE(q.segment<4>(3) == unit);
+    REQUIRE(q[7] == -0.5 + 1.5 * uniform01_of(raw()));
+    REQUIRE(rng == raw);
+  }
 }

@@ -36,7 +36,8 @@ struct problem {
 template <root_joint Root>
 problem<Root> random_problem(const model<Root>& m, std::mt19937& rng, bool planar = true) {
   problem<Root> p;
-  p.q = random_configuration(m, rng);
+  std::mt19937_64 configuration_rng(rng());  // random_configuration takes the portable engine
+  p.q = random_configuration(m, configuration_rng);
   p.v = random_vector(rng, m.nv(), 1.5);
   p.a = random_vector(rng, m.nv(), 3.0);
   p.tau = random_vector(rng, m.nv(), 20.0);

@@ -12,10 +12,11 @@ using gaitsynth::testing::is_approx;
 TEMPLATE_TEST_CASE("com_velocity is d/dt center_of_mass and momentum.linear = m com_velocity",
                    "[dynamics][com]", planar_root, floating_root, fixed_root) {
   std::mt19937 rng(21);
+  std::mt19937_64 configuration_rng(21);  // random_configuration takes the portable engine
   for (int trial = 0; trial < 5; ++trial) {
     const auto m = gaitsynth::testing::random_model<TestType>(rng);
     auto ws = make_workspace(m);
-    const Eigen::VectorXd q = random_configuration(m, rng);
+    const Eigen::VectorXd q = random_configuration(m, configuration_rng);
     const Eigen::VectorXd v = gaitsynth::testing::random_vector(rng, m.nv(), 1.5);
     const double h = 1e-6;
     Eigen::VectorXd qp(m.nq()), qm(m.nq());
@@ -42,6 +43,7 @@ TEST_CASE("momentum changes at the rate of the external forces (Newton-Euler for
           "[dynamics][momentum]") {
   // d/dt h_linear = m g + sum f;  d/dt h_angular(COM) = sum of external moments about the COM.
   std::mt19937 rng(31);
+  std::mt19937_64 configuration_rng(31);  // random_configuration takes the portable engine
   // At most 2 DOFs per body: three hinges in one body have gimbal-lock configurations where M(q)
   // is singular and accelerations (and finite differences) blow up.
   gaitsynth::testing::random_model_options o;
@@ -49,7 +51,7 @@ TEST_CASE("momentum changes at the rate of the external forces (Newton-Euler for
   for (int trial = 0; trial < 5; ++trial) {
     const auto m = gaitsynth::testing::random_model<floating_root>(rng, o);
     auto ws = make_workspace(m);
-    const Eigen::VectorXd q = random_configuration(m, rng);
+    const Eigen::VectorXd q = random_configuration(m, configuration_rng);
     const Eigen::VectorXd v = gaitsynth::testing::random_vector(rng, m.nv(), 1.5);
     const Eigen::VectorXd tau = gaitsynth::testing::random_vector(rng, m.nv(), 5.0);
     Eigen::VectorXd tau_int = tau;
@@ -89,12 +91,14 @@ auto passive_system(const model<Root>& m, workspace<Root>& ws, const Eigen::Vect
 
 TEST_CASE("momentum is conserved in free flight without gravity (RK4)", "[dynamics][momentum]") {
   std::mt19937 rng(41);
+  std::mt19937_64 configuration_rng(41);  // random_configuration takes the portable engine
   gaitsynth::testing::random_model_options o;
   o.num_bodies = 6;
   auto m = gaitsynth::testing::random_model<floating_root>(rng, o);
   m.gravity.setZero();
   auto ws = make_workspace(m);
-  sim_state s{random_configuration(m, rng), gaitsynth::testing::random_vector(rng, m.nv(), 2.0), 0};
+  sim_state s{random_configuration(m, configuration_rng),
+              gaitsynth::testing::random_vector(rng, m.nv(), 2.0), 0};
   const Eigen::VectorXd tau = Eigen::VectorXd::Zero(m.nv());
   forward_kinematics(m, ws, s.q, s.v);
   const momentum h0 = centroidal_momentum(m, ws);
@@ -116,12 +120,14 @@ TEST_CASE("momentum is conserved in free flight without gravity (RK4)", "[dynami
 TEMPLATE_TEST_CASE("total energy drifts < 1e-6 (relative) over 10 s of passive motion with RK4",
                    "[dynamics][energy]", planar_root, floating_root, fixed_root) {
   std::mt19937 rng(51);
+  std::mt19937_64 configuration_rng(51);  // random_configuration takes the portable engine
   gaitsynth::testing::random_model_options o;
   o.num_bodies = 5;
   o.max_dofs_per_body = 2;  // no gimbal lock on the way (see above)
   const auto m = gaitsynth::testing::random_model<TestType>(rng, o);
   auto ws = make_workspace(m);
-  sim_state s{random_configuration(m, rng), gaitsynth::testing::random_vector(rng, m.nv(), 1.0), 0};
+  sim_state s{random_configuration(m, configuration_rng),
+              gaitsynth::testing::random_vector(rng, m.nv(), 1.0), 0};
   const Eigen::VectorXd tau = Eigen::VectorXd::Zero(m.nv());
   forward_kinematics(m, ws, s.q, s.v);
   const double e0 = total_energy(m, ws);
@@ -145,9 +151,11 @@ TEMPLATE_TEST_CASE("total energy drifts < 1e-6 (relative) over 10 s of passive m
 
 TEST_CASE("potential energy is -m g . com", "[dynamics][energy]") {
   std::mt19937 rng(61);
+  std::mt19937_64 configuration_rng(61);  // random_configuration takes the portable engine
   const auto m = gaitsynth::testing::random_model<floating_root>(rng);
   auto ws = make_workspace(m);
-  forward_kinematics(m, ws, random_configuration(m, rng), Eigen::VectorXd::Zero(m.nv()));
+  forward_kinematics(m, ws, random_configuration(m, configuration_rng),
+                     Eigen::VectorXd::Zero(m.nv()));
   REQUIRE(potential_energy(m, ws) ==
           Approx(-m.total_mass() * m.gravity.dot(center_of_mass(m, ws))).epsilon(1e-12));
   REQUIRE(kinetic_energy(m, ws) == 0.0);

@@ -48,10 +48,12 @@ double oscillator_error(double dt) {
 template <class I>
 sim_state tumble(double dt, double T) {
   std::mt19937 rng(17);
+  std::mt19937_64 configuration_rng(17);  // random_configuration takes the portable engine
   auto m = gaitsynth::testing::random_model<floating_root>(rng, {.num_bodies = 4});
   m.gravity = vec3(0, 0, -9.81);
   auto ws = make_workspace(m);
-  sim_state s{random_configuration(m, rng), gaitsynth::testing::random_vector(rng, m.nv(), 3.0), 0};
+  sim_state s{random_configuration(m, configuration_rng),
+              gaitsynth::testing::random_vector(rng, m.nv(), 3.0), 0};
   const Eigen::VectorXd tau = Eigen::VectorXd::Zero(m.nv());
   auto sys = [&](const Eigen::VectorXd& q, const Eigen::VectorXd& v, double, Eigen::VectorXd& ddq) {
     ddq = aba(m, ws, q, v, tau);

@@ -19,11 +19,13 @@ struct fingerprint {
   std::int64_t evaluations = 0, iterations = 0;
   stop_criterion stopped = stop_criterion::none;
   std::vector<double> trace;  // best value after every iteration
+  std::vector<run_record> runs;
 };
 
 bool same(const fingerprint& a, const fingerprint& b) {
   return identical(a.x, b.x) && a.value == b.value && a.evaluations == b.evaluations &&
-         a.iterations == b.iterations && a.stopped == b.stopped && a.trace == b.trace;
+         a.iterations == b.iterations && a.stopped == b.stopped && a.trace == b.trace &&
+         a.runs == b.runs;
 }
 
 template <class O, class F, class E>
@@ -36,6 +38,7 @@ fingerprint run(O& opt, F f, E& eval, const run_options& ro = {}) {
   fp.evaluations = r.evaluations;
   fp.iterations = r.iterations;
   fp.stopped = r.stopped;
+  fp.runs = r.runs;
   return fp;
 }
 
@@ -131,6 +134,7 @@ TEST_CASE("A run killed and resumed from its checkpoint continues exactly", "[op
     CHECK(r.evaluations == ref.evaluations);
     CHECK(r.iterations == ref.iterations);
     CHECK(r.stopped == ref.stopped);
+    CHECK(r.runs == ref.runs);  // the finished runs' records survive the checkpoint
     // The resumed trace is the tail of the uninterrupted one.
     REQUIRE(resumed.trace.size() < ref.trace.size());
     CHECK(std::equal(resumed.trace.begin(), resumed.trace.end(),

@@ -1,5 +1,10 @@
 #include <catch2/catch.hpp>
 
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <vector>
+
 #include "optimizers/helpers.hpp"
 
 using namespace gaitsynth;
@@ -7,6 +12,31 @@ using namespace gaitsynth::testing;
 namespace tf = gaitsynth::test_functions;
 
 namespace {
+// Criteria after which a restart follows (the global ones end the sequence).
+bool local_criterion(stop_criterion c) {
+  return c != stop_criterion::none && c != stop_criterion::target_value &&
+         c != stop_criterion::max_evaluations && c != stop_criterion::callback;
+}
+
+// The per-run records add up to the whole result, and every run but the last ended locally.
+void check_run_records(const optimization_result& r) {
+  REQUIRE(r.runs.size() == static_cast<std::size_t>(r.restarts) + 1);
+  std::int64_t evaluations = 0, iterations = 0;
+  double best = std::numeric_limits<double>::infinity();
+  for (std::size_t k = 0; k < r.runs.size(); ++k) {
+    INFO("run " << k);
+    evaluations += r.runs[k].evaluations;
+    iterations += r.runs[k].iterations;
+    best = std::min(best, r.runs[k].best_value);
+    if (k + 1 < r.runs.size()) CHECK(local_criterion(r.runs[k].stopped));
+  }
+  CHECK(evaluations == r.evaluations);
+  CHECK(iterations == r.iterations);
+  CHECK(best == r.value);
+  CHECK(r.runs.back().stopped == r.stopped);
+  CHECK_FALSE(r.runs.front().small_population);
+}
+
 cmaes_restarts make_rastrigin(restart_strategy strategy, std::uint64_t seed) {
   cmaes_options o;
   o.sigma0 = 2.0;
@@ -34,9 +64,15 @@ TEST_CASE("Rastrigin 10-D is solved with IPOP and BIPOP restarts", "[optimizers]
       CHECK(r.x.cwiseAbs().maxCoeff() < 1e-4);  // the global minimum, not a local one
       CHECK(r.restarts > 0);  // default-population CMA-ES rarely solves it: restarts did
       CHECK(r.restarts == es.restarts());
+      check_run_records(r);
+      CHECK(r.runs == es.runs());
       if (strategy == restart_strategy::ipop) {
         // IPOP doubles lambda on every restart: 10, 20, 40, ...
         for (std::size_t i = 1; i < lambdas.size(); ++i) CHECK(lambdas[i] == 2 * lambdas[i - 1]);
+        for (std::size_t k = 0; k < r.runs.size(); ++k) {
+          CHECK(r.runs[k].population_size == 10 << k);
+          CHECK_FALSE(r.runs[k].small_population);
+        }
       }
     }
   }
@@ -68,6 +104,8 @@ TEST_CASE("Restarts honour the global evaluation budget and max_restarts", "[opt
   CHECK(r.stopped == stop_criterion::max_evaluations);
   CHECK(r.evaluations >= 3000);
   CHECK(r.evaluations < 3000 + 4 * 10 * 16);  // overshoot below one generation of the last run
+  check_run_records(r);
+  CHECK(r.runs.back().stopped == stop_criterion::max_evaluations);  // its share of the budget
 
   o.stop.max_evaluations = 0;
   o.tol_fun = 1e-3;  // short runs
@@ -76,4 +114,87 @@ TEST_CASE("Restarts honour the global evaluation budget and max_restarts", "[opt
   const auto r2 = minimize(es2, tf::rastrigin);
   CHECK(r2.restarts == 2);
   CHECK(r2.stopped == stop_criterion::tol_fun);  // the last run's criterion
+  check_run_records(r2);
+  CHECK(r2.runs.size() == 3);
+}
+
+TEST_CASE("Each run's stop criterion is reported, the target one strictly", "[optimizers]") {
+  // A flat objective: every value, hence every best value, is exactly 1.
+  const auto flat = [](const Eigen::VectorXd&) { return 1.0; };
+  cmaes_options o;
+  o.stop.max_iterations = 3;  // per run
+  restart_options ro;
+  ro.strategy = restart_strategy::ipop;
+  ro.max_restarts = 1;
+  const auto space = parameter_space::unbounded(Eigen::VectorXd::Zero(10));
+
+  o.stop.target_value = 1.0;  // reached with equality only: no stop
+  const auto at = minimize(cmaes_restarts(space, o, ro), flat);
+  CHECK(at.stopped == stop_criterion::max_iterations);
+  CHECK(at.restarts == 1);
+  check_run_records(at);
+  REQUIRE(at.runs.size() == 2);
+  CHECK(at.runs[0].population_size == 10);
+  CHECK(at.runs[1].population_size == 20);
+  for (const run_record& run : at.runs) {
+    CHECK(run.stopped == stop_criterion::max_iterations);
+    CHECK(run.iterations == 3);
+    CHECK(run.best_value == 1.0);
+  }
+
+  o.stop.target_value = std::nextafter(1.0, 2.0);  // now 1 is strictly below the target
+  const auto below = minimize(cmaes_restarts(space, o, ro), flat);
+  CHECK(below.stopped == stop_criterion::target_value);
+  CHECK(below.restarts == 0);
+  check_run_records(below);
+  CHECK(below.runs[0].iterations == 1);
+}
+
+TEST_CASE("BIPOP draws small populations in [lambda_default, lambda_large / 2]", "[optimizers]") {
+  // Short runs (tol_fun 1e-4) so that each seed makes several restarts of both regimes;
+  // lambda_large is the population of the latest large run before each small one.
+  auto check_regimes = [](double population_factor, std::uint64_t seed) {
+    cmaes_options o;
+    o.sigma0 = 2.0;
+    o.seed = seed;
+    o.tol_fun = 1e-4;
+    o.stop.max_evaluations = 60'000;
+    restart_options ro;
+    ro.strategy = restart_strategy::bipop;
+    ro.population_factor = population_factor;
+    ro.max_restarts = 4;
+    auto es = cmaes_restarts(parameter_space::unbounded(uniform_x0(10, -3, 3, seed)), o, ro);
+    const auto r = minimize(es, tf::rastrigin);
+    INFO("population_factor " << population_factor << " seed " << seed);
+    check_run_records(r);
+    constexpr int lambda_default = 10;  // 4 + floor(3 ln 10)
+    REQUIRE(r.runs.size() >= 3);
+    CHECK(r.runs[0].population_size == lambda_default);
+    // Run 0 counts as small, so the first restart is a large one.
+    CHECK_FALSE(r.runs[1].small_population);
+    int large_runs = 0, small_runs = 0, lambda_large = lambda_default;
+    for (std::size_t k = 1; k < r.runs.size(); ++k) {
+      const run_record& run = r.runs[k];
+      INFO("run " << k << " lambda " << run.population_size << " lambda_large " << lambda_large);
+      if (run.small_population) {
+        ++small_runs;
+        CHECK(run.population_size >= lambda_default);
+        CHECK(run.population_size <= std::max(lambda_default, lambda_large / 2));
+        CHECK(run.sigma0 <= o.sigma0);
+        CHECK(run.sigma0 >= o.sigma0 / 100);
+      } else {
+        ++large_runs;
+        lambda_large =
+            static_cast<int>(std::lround(lambda_default * std::pow(population_factor, large_runs)));
+        CHECK(run.population_size == lambda_large);
+        CHECK(run.sigma0 == o.sigma0);
+      }
+    }
+    return small_runs;
+  };
+  int small_runs = 0;
+  for (std::uint64_t seed : {0u, 1u, 2u, 3u, 4u}) small_runs += check_regimes(2.0, seed);
+  CHECK(small_runs >= 10);  // the check above did run
+  // A factor below 2: until lambda_large reaches 2 lambda_default, small runs use the default.
+  CHECK(check_regimes(1.5, 5) > 0);
 }

@@ -1,8 +1,8 @@
 #pragma once
 /// \file standard_normal.hpp
 /// Standard normal variates from an explicitly seeded std::mt19937_64, the same on every standard
-/// library (optimizers/random.hpp says why not std::normal_distribution). Used by the optimizers
-/// and by the seeded start perturbations of rollout/start_perturbations.hpp.
+/// library (optimizers/random.hpp says why not std::normal_distribution). Used by the optimizers,
+/// the seeded start perturbations of rollout/start_perturbations.hpp and random_configuration.
 #include <Eigen/Core>
 
 #include <cmath>

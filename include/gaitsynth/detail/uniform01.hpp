@@ -1,6 +1,7 @@
 #pragma once
 /// \file uniform01.hpp
-/// The one uniform variate every seeded generator in gaitsynth uses (optimizers, terrain).
+/// The one uniform variate every seeded generator in gaitsynth uses (optimizers, terrain,
+/// random_configuration).
 /// std::mt19937_64's sequence is fixed by the standard while std::uniform_real_distribution's
 /// mapping is not, so this gives the same numbers for the same seed on every standard library.
 #include <random>

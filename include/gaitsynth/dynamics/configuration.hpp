@@ -9,6 +9,8 @@
 #include <numbers>
 #include <random>
 
+#include "gaitsynth/detail/standard_normal.hpp"
+#include "gaitsynth/detail/uniform01.hpp"
 #include "gaitsynth/error.hpp"
 #include "gaitsynth/model/model.hpp"
 #include "gaitsynth/model/state.hpp"
@@ -100,32 +102,37 @@ void normalize_configuration(const model<Root>& m, Eigen::Ref<Eigen::VectorXd> q
   }
 }
 
-/// A random configuration: joint angles uniform within their limits (intersected with [-pi, pi]),
-/// root translation uniform in [-1, 1] m per coordinate, root pitch uniform in [-pi, pi], root
-/// quaternion uniform on SO(3).
-template <root_joint Root, class Rng>
-Eigen::VectorXd random_configuration(const model<Root>& m, Rng& rng) {
+/// A random configuration drawn from `rng` with the library's portable variates (the same numbers
+/// for the same seed on every standard library; optimizers/random.hpp says why not the std::
+/// distributions, so the engine is std::mt19937_64, as everywhere in gaitsynth). With u =
+/// detail::uniform01(rng) = (rng() >> 11) * 2^-53 in [0, 1), in this order: planar root x, z
+/// uniform in [-1, 1) m (-1 + 2u) and pitch in [-pi, pi) (pi (-1 + 2u)); floating root translation
+/// uniform in [-1, 1) m per coordinate, then a quaternion uniform on SO(3) (four standard normals
+/// from detail::fill_standard_normal, normalized; redrawn in the practically impossible case of
+/// norm < 1e-6); then each joint angle lo + (hi - lo) u, where [lo, hi] is its limit intersected
+/// with [-pi, pi] (lo itself when that is empty).
+template <root_joint Root>
+Eigen::VectorXd random_configuration(const model<Root>& m, std::mt19937_64& rng) {
   constexpr double pi = std::numbers::pi;
-  std::uniform_real_distribution<double> unit(-1.0, 1.0);
+  auto uniform_symmetric = [&rng] { return -1.0 + 2.0 * detail::uniform01(rng); };
   Eigen::VectorXd q(m.nq());
   if constexpr (std::is_same_v<Root, planar_root>) {
-    q[0] = unit(rng);
-    q[1] = unit(rng);
-    q[2] = pi * unit(rng);
+    q[0] = uniform_symmetric();
+    q[1] = uniform_symmetric();
+    q[2] = pi * uniform_symmetric();
   } else if constexpr (std::is_same_v<Root, floating_root>) {
-    for (int i = 0; i < 3; ++i) q[i] = unit(rng);
-    std::normal_distribution<double> gauss(0.0, 1.0);
-    Eigen::Vector4d g;
+    for (int i = 0; i < 3; ++i) q[i] = uniform_symmetric();
+    Eigen::Vector4d gauss;
     do {
-      for (int i = 0; i < 4; ++i) g[i] = gauss(rng);
-    } while (g.norm() < 1e-6);
-    q.template segment<4>(3) = g.normalized();
+      detail::fill_standard_normal(rng, gauss);
+    } while (gauss.norm() < 1e-6);
+    q.template segment<4>(3) = gauss.normalized();
   }
   for (int j = 0; j < m.num_joint_dofs(); ++j) {
     const double lo = std::max(m.dofs[j].limit.lower, -pi);
-    const double hi = std::min(m.dofs[j].limit.upper, pi);
-    std::uniform_real_distribution<double> d(lo, hi > lo ? hi : lo + 1e-12);
-    q[Root::nq + j] = d(rng);
+    const double hi = std::max(lo, std::min(m.dofs[j].limit.upper, pi));
+    // lo + (hi - lo) u can round up past hi; the draw must stay within the limit.
+    q[Root::nq + j] = std::min(hi, lo + (hi - lo) * detail::uniform01(rng));
   }
   return q;
 }

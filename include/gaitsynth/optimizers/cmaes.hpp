@@ -481,7 +481,7 @@ class cmaes {
     auto set = [&](sc c) {
       if (stopped_ == sc::none) stopped_ = c;
     };
-    if (!std::isnan(best_value_) && best_value_ <= t.target_value) set(sc::target_value);
+    if (best_value_ < t.target_value) set(sc::target_value);  // strict; false for NaN
     if (t.max_evaluations > 0 && evaluations_ >= t.max_evaluations) set(sc::max_evaluations);
     if (iteration_ >= max_iterations_) set(sc::max_iterations);
     if (t.no_improvement_iterations > 0 &&

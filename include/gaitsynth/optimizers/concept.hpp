@@ -79,7 +79,7 @@ enum class stop_criterion : std::uint8_t {
   none = 0,          ///< still running
   max_iterations,    ///< iteration budget used up
   max_evaluations,   ///< evaluation budget used up
-  target_value,      ///< best value <= target (e.g. 1e-8 for the benchmark functions)
+  target_value,      ///< best value < target, strictly (e.g. 1e-8 for the benchmark functions)
   no_improvement,    ///< best value not improved for N iterations (Wang 2009: 300)
   mean_change,       ///< mean moved less than a tolerance in one iteration (Wu 2010: 1e-3)
   tol_fun,           ///< CMA-ES: range of recent best values and of the last generation < tol_fun
@@ -134,7 +134,8 @@ struct termination_options {
   std::int64_t max_iterations = 0;
   /// Objective evaluations in total (over all restarts); 0: unlimited.
   std::int64_t max_evaluations = 0;
-  /// Stop as soon as a value <= target_value has been seen.
+  /// Stop as soon as a value strictly below target_value has been seen (best < target_value; a
+  /// value equal to the target does not stop). -inf, the default, never stops.
   double target_value = -std::numeric_limits<double>::infinity();
   /// Stop when the best value has not improved for this many iterations (Wang 2009 uses 300).
   std::int64_t no_improvement_iterations = 0;
@@ -156,6 +157,21 @@ struct optimizer_status {
   /// Fraction of the budget used, in [0, 1], for the time-left estimate; NaN when unknown.
   double budget_fraction = std::numeric_limits<double>::quiet_NaN();
   stop_criterion stopped = stop_criterion::none;
+};
+
+/// One run of a restarting optimizer (cmaes_restarts): what it started with and why it ended, so a
+/// result says more than the whole sequence's stop reason.
+struct run_record {
+  int population_size = 0;        ///< lambda of this run
+  double sigma0 = 0;              ///< its initial step size, normalized units
+  bool small_population = false;  ///< BIPOP's small-population regime (run 0 and IPOP: false)
+  std::int64_t iterations = 0;    ///< of this run alone
+  std::int64_t evaluations = 0;   ///< of this run alone
+  double best_value = std::numeric_limits<double>::quiet_NaN();  ///< best of this run (NaN: none)
+  /// Why this run ended; none for a run still going (or cut short by the driver's callback).
+  stop_criterion stopped = stop_criterion::none;
+
+  friend bool operator==(const run_record&, const run_record&) = default;
 };
 
 /// The optimizer policy: a strategy with an ask/tell interface, a stop test, the best point seen,

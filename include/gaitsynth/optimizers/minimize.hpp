@@ -54,6 +54,9 @@ struct optimization_result {
   std::int64_t evaluations = 0;
   std::int64_t non_finite = 0;  ///< non-finite objective values met (ranked worst)
   int restarts = 0;
+  /// Each run of a restarting optimizer (cmaes_restarts::runs()): population, evaluations and its
+  /// own stop criterion; empty for optimizers that do not restart.
+  std::vector<run_record> runs;
   double elapsed_seconds = 0;  ///< wall time of this call (not of earlier, checkpointed calls)
   bool resumed = false;        ///< started from a checkpoint
 };
@@ -209,6 +212,7 @@ optimization_result minimize(O&& opt, F&& objective, E&& eval, const run_options
   result.evaluations = status.evaluations;
   result.non_finite = status.non_finite;
   result.restarts = status.restart;
+  if constexpr (requires { opt.runs(); }) result.runs = opt.runs();
   result.elapsed_seconds = elapsed();
   return result;
 }

@@ -6,15 +6,19 @@
 ///    `population_factor` (2);
 ///  - BIPOP (Hansen, GECCO BBOB 2009): interleave such "large population" runs (sigma0, lambda =
 ///    lambda_default * 2^i) with "small population" runs with lambda = floor(lambda_default *
-///    (lambda_large / lambda_default / 2)^(U^2)) and sigma = sigma0 * 10^(-2U), U ~ U(0, 1),
-///    choosing before each restart the regime that has used fewer evaluations so far; a small run
-///    may use at most half the evaluations of the last large run (pycma's rule).
+///    max(1, lambda_large / lambda_default / 2)^(U^2)) and sigma = sigma0 * 10^(-2U), U ~ U(0, 1),
+///    where lambda_large is the population of the latest large run, so lambda lies in
+///    [lambda_default, max(lambda_default, lambda_large / 2)]. Before each restart the regime that
+///    has used fewer evaluations so far runs. Run 0 is accounted with the small budget (as in
+///    pycma), so the first restart is a large one and every small run follows a large run; a small
+///    run may use at most half the evaluations of the last large run.
 /// Run 0 is a plain CMA-ES run with the given options and seed, so `strategy = none` reproduces
 /// `cmaes` exactly. Later runs get seeds drawn from the wrapper's own std::mt19937_64 (seeded with
 /// the same seed), which is checkpointed with everything else.
 ///
 /// Global stops (no restart): target_value, max_evaluations (over all runs), and running out of
-/// restarts (`max_restarts`); the reported criterion is then the last run's.
+/// restarts (`max_restarts`); the reported criterion is then the last run's. `runs()` (and
+/// `optimization_result::runs`) lists every run with its population, evaluations and own criterion.
 #include <Eigen/Core>
 
 #include <cmath>
@@ -80,6 +84,7 @@ class cmaes_restarts {
     const stop_criterion c = run_->stopped();
     if (c == stop_criterion::none) return;
     last_run_criterion_ = c;
+    finished_runs_.push_back(current_run_record());
     const auto& t = base_.stop;
     const std::int64_t run_evals = run_->evaluations();
     if (large_regime_) {
@@ -88,7 +93,7 @@ class cmaes_restarts {
     } else {
       small_evals_ += run_evals;
     }
-    if (!std::isnan(best_value_) && best_value_ <= t.target_value) {
+    if (best_value_ < t.target_value) {  // strict, as in cmaes; false for NaN
       stopped_ = stop_criterion::target_value;
       return;
     }
@@ -111,6 +116,13 @@ class cmaes_restarts {
   const cmaes& current_run() const { return *run_; }
   /// Criterion that stopped the most recent finished run (none while run 0 is going).
   stop_criterion last_run_criterion() const { return last_run_criterion_; }
+  /// Every run so far, in order (restarts() + 1 of them): the finished ones, then the current run
+  /// while it is still going (its `stopped` is none).
+  std::vector<run_record> runs() const {
+    std::vector<run_record> all = finished_runs_;
+    if (run_->stopped() == stop_criterion::none) all.push_back(current_run_record());
+    return all;
+  }
 
   optimizer_status status() const {
     optimizer_status s = run_->status();
@@ -140,6 +152,16 @@ class cmaes_restarts {
     w.integer("non_finite", non_finite_);
     w.integer("stopped", static_cast<std::int64_t>(stopped_));
     w.integer("last_run_criterion", static_cast<std::int64_t>(last_run_criterion_));
+    w.integer("finished_runs", static_cast<std::int64_t>(finished_runs_.size()));
+    for (const run_record& f : finished_runs_) {
+      w.integer("finished_run_lambda", f.population_size);
+      w.real("finished_run_sigma0", f.sigma0);
+      w.integer("finished_run_small", f.small_population ? 1 : 0);
+      w.integer("finished_run_iterations", f.iterations);
+      w.integer("finished_run_evaluations", f.evaluations);
+      w.real("finished_run_best", f.best_value);
+      w.integer("finished_run_stopped", static_cast<std::int64_t>(f.stopped));
+    }
     w.real("best_value", best_value_);
     w.vector("best_x", best_x_);
     w.rng("restart_rng", rng_);
@@ -165,6 +187,18 @@ class cmaes_restarts {
     non_finite_ = r.integer("non_finite");
     stopped_ = static_cast<stop_criterion>(r.integer("stopped"));
     last_run_criterion_ = static_cast<stop_criterion>(r.integer("last_run_criterion"));
+    const std::int64_t num_finished = r.integer("finished_runs");
+    if (num_finished < 0) throw std::runtime_error("checkpoint: 'finished_runs' is negative");
+    finished_runs_.assign(static_cast<std::size_t>(num_finished), run_record{});
+    for (run_record& f : finished_runs_) {
+      f.population_size = static_cast<int>(r.integer("finished_run_lambda"));
+      f.sigma0 = r.real("finished_run_sigma0");
+      f.small_population = r.integer("finished_run_small") != 0;
+      f.iterations = r.integer("finished_run_iterations");
+      f.evaluations = r.integer("finished_run_evaluations");
+      f.best_value = r.real("finished_run_best");
+      f.stopped = static_cast<stop_criterion>(r.integer("finished_run_stopped"));
+    }
     best_value_ = r.real("best_value");
     best_x_ = r.vector("best_x", space_.size());
     r.rng("restart_rng", rng_);
@@ -188,14 +222,14 @@ class cmaes_restarts {
     bool large = true;
     int lambda = 0;
     if (ro_.strategy == restart_strategy::bipop && small_evals_ < large_evals_) {
-      // Small-population regime ([Hansen 2009]): lambda between lambda_default and half the
-      // current large lambda, sigma0 scaled by 10^(-2U).
+      // Small-population regime ([Hansen 2009]): lambda in [lambda_default, lambda_large / 2] for
+      // the latest large run's lambda_large (run 0 counts as small, so there is one), sigma0 scaled
+      // by 10^(-2U). The ratio is at least 1 so a population_factor below 2 cannot push lambda
+      // below the default.
       large = false;
       const double u = detail::uniform01(rng_);
-      const double large_lambda = lambda0_ * std::pow(ro_.population_factor, large_restarts_);
-      lambda = std::max(
-          2,
-          static_cast<int>(std::floor(lambda0_ * std::pow(0.5 * large_lambda / lambda0_, u * u))));
+      const double ratio = std::max(1.0, 0.5 * large_run_lambda(large_restarts_) / lambda0_);
+      lambda = static_cast<int>(std::floor(lambda0_ * std::pow(ratio, u * u)));
       o.sigma0 = base_.sigma0 * std::pow(10.0, -2.0 * detail::uniform01(rng_));
       const std::int64_t cap = std::max<std::int64_t>(1, last_large_evals_ / 2);
       o.stop.max_iterations = std::max<std::int64_t>(1, cap / lambda);
@@ -203,8 +237,7 @@ class cmaes_restarts {
         o.stop.max_iterations = std::min(o.stop.max_iterations, base_.stop.max_iterations);
     } else {
       ++large_restarts_;
-      lambda = static_cast<int>(
-          std::lround(lambda0_ * std::pow(ro_.population_factor, large_restarts_)));
+      lambda = large_run_lambda(large_restarts_);
     }
     large_regime_ = large;
     o.population_size = std::max(2, lambda);
@@ -227,6 +260,23 @@ class cmaes_restarts {
     ++restarts_;
   }
 
+  /// Population of the i-th large-population restart (i = 0: the default lambda of run 0).
+  int large_run_lambda(int i) const {
+    return static_cast<int>(std::lround(lambda0_ * std::pow(ro_.population_factor, i)));
+  }
+
+  run_record current_run_record() const {
+    run_record rec;
+    rec.population_size = run_->population_size();
+    rec.sigma0 = run_opt_.sigma0;
+    rec.small_population = restarts_ > 0 && !large_regime_;
+    rec.iterations = run_->iteration();
+    rec.evaluations = run_->evaluations();
+    rec.best_value = run_->best_value();
+    rec.stopped = run_->stopped();
+    return rec;
+  }
+
   cmaes_options base_;
   restart_options ro_;
   parameter_space space_;
@@ -236,12 +286,15 @@ class cmaes_restarts {
   Eigen::VectorXd m0_;
   std::mt19937_64 rng_;
   int restarts_ = 0, large_restarts_ = 0;
-  bool large_regime_ = true;
+  // Run 0 is accounted with the small-population budget (pycma: it is the large population
+  // before the first doubling), so BIPOP's first restart is a large one.
+  bool large_regime_ = false;
   std::int64_t large_evals_ = 0, small_evals_ = 0, last_large_evals_ = 0;
   std::int64_t iteration_ = 0, evaluations_ = 0, non_finite_ = 0;
   double best_value_ = std::numeric_limits<double>::quiet_NaN();
   Eigen::VectorXd best_x_;
   stop_criterion stopped_ = stop_criterion::none, last_run_criterion_ = stop_criterion::none;
+  std::vector<run_record> finished_runs_;
 };
 
 static_assert(optimizer<cmaes_restarts>);

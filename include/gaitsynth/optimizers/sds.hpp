@@ -271,7 +271,7 @@ class sds {
     auto set = [&](sc c) {
       if (stopped_ == sc::none) stopped_ = c;
     };
-    if (!std::isnan(best_value_) && best_value_ <= t.target_value) set(sc::target_value);
+    if (best_value_ < t.target_value) set(sc::target_value);  // strict; false for NaN
     if (t.max_evaluations > 0 && evaluations_ >= t.max_evaluations) set(sc::max_evaluations);
     if (t.max_iterations > 0 && iteration_ >= t.max_iterations) set(sc::max_iterations);
     if (t.no_improvement_iterations > 0 &&
