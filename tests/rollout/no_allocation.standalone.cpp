@@ -4,77 +4,7 @@
 // operator new. The counted region runs from the objective's first accumulate (step 0) to its last
 // (step N-1): every per-step code path (kinematics, contact, pushes, sensing and the delay line,
 // controller, actuator, objective, recorder, integrator) runs inside it many times.
-#include <atomic>
-#include <cstdlib>
-#include <new>
-
-namespace {
-std::atomic<long> g_news{0};
-std::atomic<long> g_eigen_mallocs{0};
-}  // namespace
-inline void gaitsynth_test_count_eigen_assert() {
-  ++g_eigen_mallocs;
-}
-#define EIGEN_RUNTIME_NO_MALLOC
-#define eigen_assert(x)                                             \
-  do {                                                              \
-    if (!static_cast<bool>(x)) gaitsynth_test_count_eigen_assert(); \
-  } while (false)
-
-// GCC 12 flags free() of memory from a (replaced) operator new once both are inlined into one
-// caller; here the pairing is by construction (every replaced new is malloc/aligned_alloc).
-#pragma GCC diagnostic push
-#pragma GCC diagnostic ignored "-Wmismatched-new-delete"
-__attribute__((noinline)) void* operator new(std::size_t n) {
-  ++g_news;
-  if (void* p = std::malloc(n ? n : 1)) return p;
-  throw std::bad_alloc();
-}
-__attribute__((noinline)) void* operator new[](std::size_t n) {
-  return ::operator new(n);
-}
-__attribute__((noinline)) void* operator new(std::size_t n, std::align_val_t a) {
-  ++g_news;
-  const auto al = static_cast<std::size_t>(a);
-  if (void* p = std::aligned_alloc(al, (n + al - 1) / al * al)) return p;
-  throw std::bad_alloc();
-}
-__attribute__((noinline)) void* operator new[](std::size_t n, std::align_val_t a) {
-  return ::operator new(n, a);
-}
-__attribute__((noinline)) void* operator new(std::size_t n, const std::nothrow_t&) noexcept {
-  ++g_news;
-  return std::malloc(n ? n : 1);
-}
-__attribute__((noinline)) void* operator new[](std::size_t n, const std::nothrow_t&) noexcept {
-  ++g_news;
-  return std::malloc(n ? n : 1);
-}
-__attribute__((noinline)) void operator delete(void* p) noexcept {
-  std::free(p);
-}
-__attribute__((noinline)) void operator delete[](void* p) noexcept {
-  std::free(p);
-}
-__attribute__((noinline)) void operator delete(void* p, std::size_t) noexcept {
-  std::free(p);
-}
-__attribute__((noinline)) void operator delete[](void* p, std::size_t) noexcept {
-  std::free(p);
-}
-__attribute__((noinline)) void operator delete(void* p, std::align_val_t) noexcept {
-  std::free(p);
-}
-__attribute__((noinline)) void operator delete[](void* p, std::align_val_t) noexcept {
-  std::free(p);
-}
-__attribute__((noinline)) void operator delete(void* p, std::size_t, std::align_val_t) noexcept {
-  std::free(p);
-}
-__attribute__((noinline)) void operator delete[](void* p, std::size_t, std::align_val_t) noexcept {
-  std::free(p);
-}
-#pragma GCC diagnostic pop
+#include "support/counting_allocations.hpp"  // first: it configures Eigen
 
 #include <catch2/catch.hpp>
 
@@ -126,13 +56,13 @@ struct counting_objective {
   void accumulate(accumulator_type& a, const View& v) const {
     if (v.step == 0) {
       r->news_at_start = g_news.load();
-      r->eigen_at_start = g_eigen_mallocs.load();
+      r->eigen_at_start = g_eigen_asserts.load();
       Eigen::internal::set_is_malloc_allowed(false);
     }
     inner.accumulate(a, v);
     ++r->views;
     r->news_at_end = g_news.load();
-    r->eigen_at_end = g_eigen_mallocs.load();
+    r->eigen_at_end = g_eigen_asserts.load();
   }
   double finish(const accumulator_type& a, const rollout_outcome& out) const {
     Eigen::internal::set_is_malloc_allowed(true);
@@ -230,11 +160,11 @@ TEST_CASE("the counters see allocations (the test is not vacuous)", "[rollout][a
   std::vector<int> v(100);
   benchmark_escape(v.data());
   CHECK(g_news.load() - n0 >= 1);
-  const long e0 = g_eigen_mallocs.load();
+  const long e0 = g_eigen_asserts.load();
   Eigen::internal::set_is_malloc_allowed(false);
   Eigen::VectorXd x(1000);
   Eigen::internal::set_is_malloc_allowed(true);
-  CHECK(g_eigen_mallocs.load() - e0 >= 1);
+  CHECK(g_eigen_asserts.load() - e0 >= 1);
   CHECK(x.size() == 1000);
 }
 
@@ -297,13 +227,13 @@ template <class Problem>
 void require_allocation_free_cost(const Problem& prob, const Eigen::VectorXd& x, double horizon) {
   auto ctx = prob.make_context();
   const double first = prob.cost(x, horizon, ctx);  // set-up: sizes every buffer
-  const long n0 = g_news.load(), e0 = g_eigen_mallocs.load();
+  const long n0 = g_news.load(), e0 = g_eigen_asserts.load();
   Eigen::internal::set_is_malloc_allowed(false);
   const double second = prob.cost(x, horizon, ctx);
   Eigen::internal::set_is_malloc_allowed(true);
   CHECK(second == first);
   CHECK(g_news.load() - n0 == 0);
-  CHECK(g_eigen_mallocs.load() - e0 == 0);
+  CHECK(g_eigen_asserts.load() - e0 == 0);
 }
 }  // namespace
 
@@ -345,8 +275,9 @@ TEST_CASE("an evaluation on a reused problem context allocates nothing",
     rollout_options ro;
     ro.contact.mu = 10.0;
     ro.initial_state = make_state(m);  // sized: the controller writes its start state in place
-    const rollout_problem prob{m, mixed_pd_actuator{}, c, wang2009_objective(m), flat_terrain{},
-                               semi_implicit_euler{}, ro};
+    const rollout_problem prob{
+        m, mixed_pd_actuator{}, c, wang2009_objective(m), flat_terrain{}, semi_implicit_euler{},
+        ro};
     require_allocation_free_cost(prob, prob.initial_parameters(), 0.3);
   }
   SECTION("3D humanoid: SIMBICON, the Wang 2009 objective with a target speed") {
@@ -357,9 +288,13 @@ TEST_CASE("an evaluation on a reused problem context allocates nothing",
     rollout_options ro;
     ro.contact.mu = 10.0;
     ro.initial_state = simbicon_start_state(m);
-    const rollout_problem prob{m, mixed_pd_actuator{}, c,
-                               wang2009_objective(m, {.target_speed = 1.0}), flat_terrain{},
-                               semi_implicit_euler{}, ro};
+    const rollout_problem prob{m,
+                               mixed_pd_actuator{},
+                               c,
+                               wang2009_objective(m, {.target_speed = 1.0}),
+                               flat_terrain{},
+                               semi_implicit_euler{},
+                               ro};
     require_allocation_free_cost(prob, prob.initial_parameters(), 0.5);
   }
 }

@@ -62,6 +62,12 @@ void* operator new(std::size_t n, std::align_val_t a) {
 void* operator new[](std::size_t n, std::align_val_t a) {
   return checked(acquire_aligned(n, a));
 }
+void* operator new(std::size_t n, std::align_val_t a, const std::nothrow_t&) noexcept {
+  return acquire_aligned(n, a);
+}
+void* operator new[](std::size_t n, std::align_val_t a, const std::nothrow_t&) noexcept {
+  return acquire_aligned(n, a);
+}
 void operator delete(void* p) noexcept {
   release(p);
 }
@@ -90,6 +96,12 @@ void operator delete(void* p, std::size_t, std::align_val_t) noexcept {
   release(p);
 }
 void operator delete[](void* p, std::size_t, std::align_val_t) noexcept {
+  release(p);
+}
+void operator delete(void* p, std::align_val_t, const std::nothrow_t&) noexcept {
+  release(p);
+}
+void operator delete[](void* p, std::align_val_t, const std::nothrow_t&) noexcept {
   release(p);
 }
 
