@@ -314,7 +314,7 @@ int synthesize_and_report(const std::string& name, const Problem& prob,
             << " s; checking the controller over " << c.check_seconds << " s\n";
 
   trajectory traj;
-  const walk_check w = check_walk(prob, r.x, c.check_seconds, &traj, 40);
+  const walk_check w = check_walk(prob, r.x, c.check_seconds, &traj, 40, sharon2005_walk_criteria);
   const auto ctrl = prob.controller_with(r.x);
 
   nlohmann::ordered_json info;
@@ -337,6 +337,8 @@ int synthesize_and_report(const std::string& name, const Problem& prob,
   info["check_seconds"] = c.check_seconds;
   info["seconds_walked"] = w.seconds;
   info["fell"] = w.fell;
+  info["stalled"] = w.stalled;
+  info["walked"] = w.walked;
   info["distance"] = w.distance;
   info["average_speed"] = w.average_speed;
   for (auto it = extra.begin(); it != extra.end(); ++it) info[it.key()] = it.value();
@@ -355,12 +357,14 @@ int synthesize_and_report(const std::string& name, const Problem& prob,
   summary["cost"] = r.value;
   summary["seconds_walked"] = w.seconds;
   summary["fell"] = w.fell;
+  summary["stalled"] = w.stalled;
+  summary["walked"] = w.walked;
   summary["average_speed"] = std::round(w.average_speed * 1000) / 1000;
   summary["controller"] = ctrl_path.string();
   summary["trajectory_csv"] = csv_path.string();
   summary["convergence_csv"] = so.run.log_file.string();
-  std::cerr << name << ": " << (w.fell ? "FELL after " : "walked ") << w.seconds << " s, "
-            << w.distance << " m at " << w.average_speed << " m/s\n"
+  std::cerr << name << ": " << verdict(w) << " (" << w.seconds << " s), " << w.distance << " m at "
+            << w.average_speed << " m/s\n"
             << name << ": controller  " << ctrl_path.string() << "\n"
             << name << ": trajectory  " << csv_path.string() << "\n"
             << name << ": convergence " << so.run.log_file.string() << "\n";

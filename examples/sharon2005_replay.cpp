@@ -130,7 +130,8 @@ int run(const options& o, const std::string& title, const planar_model& m,
   const Eigen::VectorXd x =
       Eigen::Map<const Eigen::VectorXd>(p.data(), static_cast<Eigen::Index>(p.size()));
   trajectory traj;
-  const walk_check w = check_walk(prob, x, o.seconds, &traj, 40);  // 60 frames/s
+  const walk_check w =
+      check_walk(prob, x, o.seconds, &traj, 40, sharon2005_walk_criteria);  // 60 fps
 
   std::filesystem::create_directories(o.out_dir);
   const auto csv = o.out_dir / ("sharon2005_replay_" + o.result + ".csv");
@@ -148,14 +149,16 @@ int run(const options& o, const std::string& title, const planar_model& m,
   j["seconds"] = o.seconds;
   j["seconds_walked"] = w.seconds;
   j["fell"] = w.fell;
+  j["stalled"] = w.stalled;
+  j["walked"] = w.walked;
   j["distance"] = std::round(w.distance * 1000) / 1000;
   j["average_speed"] = std::round(w.average_speed * 1000) / 1000;
   j["trajectory_csv"] = csv.string();
   if (!o.viz.html.empty()) j["html"] = o.viz.html;
   if (!o.viz.filmstrip_svg.empty()) j["filmstrip"] = o.viz.filmstrip_svg;
   std::cout << j.dump() << std::endl;
-  std::cerr << title << ": " << (w.fell ? "FELL after " : "walked ") << w.seconds << " s, "
-            << w.distance << " m at " << w.average_speed << " m/s\n";
+  std::cerr << title << ": " << verdict(w) << " (" << w.seconds << " s), " << w.distance << " m at "
+            << w.average_speed << " m/s\n";
   return 0;
 }
 

@@ -71,7 +71,7 @@ int main(int argc, char** argv) try {
         m,      torque_actuator{},     ctrl, mass_distance<planar_root>(m, target),
         ground, semi_implicit_euler{}, ro};
     trajectory traj;
-    const walk_check w = check_walk(prob, x, seconds, &traj, 40);
+    const walk_check w = check_walk(prob, x, seconds, &traj, 40, sharon2005_walk_criteria);
     const auto csv = out / ("sharon2005_robustness_" + name + ".csv");
     save_trajectory_csv(traj, csv.string());
     // A strobe picture of the first 3 s, like the paper's Figures 5b and 8.
@@ -97,7 +97,7 @@ int main(int argc, char** argv) try {
       v.filmstrip = fo;
       write_viz_outputs(m, traj, v, &std::cerr);
     }
-    const bool ok = !w.fell && w.average_speed > 0.3;
+    const bool ok = w.walked;  // rollout/walk_check.hpp: no fall, no stall, >= 0.3 m/s
     walked += ok;
     ++total;
     nlohmann::ordered_json j;
@@ -105,14 +105,15 @@ int main(int argc, char** argv) try {
     j["description"] = what;
     j["seconds_walked"] = w.seconds;
     j["fell"] = w.fell;
+    j["stalled"] = w.stalled;
     j["distance"] = std::round(w.distance * 1000) / 1000;
     j["average_speed"] = std::round(w.average_speed * 1000) / 1000;
     j["walks"] = ok;
     j["trajectory_csv"] = csv.string();
     j["filmstrip_svg"] = svg.string();
     std::cout << j.dump() << std::endl;
-    std::cerr << name << ": " << (ok ? "walked " : "FAILED after ") << w.seconds << " s, "
-              << w.distance << " m (" << what << ")\n";
+    std::cerr << name << ": " << verdict(w) << " (" << w.seconds << " s), " << w.distance << " m ("
+              << what << ")\n";
   };
   report("nominal", "the 7-link human of Table I on flat ground", nominal, flat_terrain{});
   for (const auto& v : sharon_scenarios::figure8_bodies())

@@ -259,6 +259,8 @@ nlohmann::json check_summary(const cli& c, const rollout_result& r, const wang20
   sum["check_seconds"] = c.check_seconds;
   sum["walked_seconds"] = r.time;
   sum["fell"] = r.reason == stop_reason::fell;
+  sum["stalled"] = r.reason == stop_reason::stalled;
+  sum["walked"] = walked(r);
   sum["speed"] = rep.average_speed;
   sum["step_length"] = rep.step_length;
   sum["power_ratio"] = rep.power_ratio;
@@ -316,6 +318,7 @@ int run_simbicon(const floating_model& m, const cli& c) {
   rollout_options opt = wang2009_rollout_options(m);
   opt.implicit_joint_damping = false;  // SIMBICON's walk was set with explicit dampers
   opt.initial_state = simbicon_start_state(m);
+  opt = walk_options(opt);  // rollout/walk_check.hpp: stall detection on
   trajectory tr;
   opt.record = &tr;
   opt.record_every = 40;
@@ -425,7 +428,7 @@ int optimize_and_check(const floating_model& m, const cli& c, const wang2009_con
   }
   // Check: the walk for check_seconds, recorded, with the report of eq. 16's terms over it.
   trajectory tr;
-  rollout_options check = opt;
+  rollout_options check = walk_options(opt);  // rollout/walk_check.hpp: stall detection on
   check.record = &tr;
   check.record_every = 40;  // 60 frames per second
   check.duration = c.check_seconds;
@@ -455,9 +458,9 @@ int optimize_and_check(const floating_model& m, const cli& c, const wang2009_con
   sum["iterations"] = res.iterations;
   // The claim tests' robustness check: 10 starts with joint velocities perturbed by a seeded
   // N(0, 0.05 rad/s), each walked for check_seconds.
-  int walked = 0;
+  int walking = 0;
   for (const Eigen::VectorXd& dv : joint_velocity_perturbations(m, 10, 0.05, 2009)) {
-    rollout_options po = opt;
+    rollout_options po = walk_options(opt);
     po.initial_velocity_offset = dv;
     po.duration = c.check_seconds;
     wang2009_controller pc = prob.controller_with(best);
@@ -466,9 +469,9 @@ int optimize_and_check(const floating_model& m, const cli& c, const wang2009_con
         rollout(m, mixed_pd_actuator{}, pc, obj, ground, integ,
                 std::span<const double>(best.data(), static_cast<std::size_t>(best.size())), po,
                 scratch, ps);
-    walked += pr.reason == stop_reason::horizon;
+    walking += walked(pr);
   }
-  sum["perturbed_starts_walked"] = walked;
+  sum["perturbed_starts_walked"] = walking;
   std::cout << sum.dump() << std::endl;
   return 0;
 }

@@ -83,6 +83,7 @@
 #include "gaitsynth/rollout/start_perturbations.hpp"
 #include "gaitsynth/rollout/termination.hpp"
 #include "gaitsynth/rollout/trajectory.hpp"
+#include "gaitsynth/rollout/walk_check.hpp"
 
 #include "gaitsynth/optimizers/checkpoint.hpp"
 #include "gaitsynth/optimizers/cmaes.hpp"

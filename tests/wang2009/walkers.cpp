@@ -2,8 +2,9 @@
 // data/wang2009/walkers/ (written by examples/wang2009_walk.cpp; docs/reproductions/wang2009.md
 // has the commands). Each test re-simulates a walker without optimizing anything.
 //
-// "Walks 100 s" means the 100 s rollout ends at its horizon, not by a fall (COM below E_fail's
-// height) or divergence. Every walker is also walked from 10 starts whose joint velocities are
+// "Walks 100 s" is the library's walked() (rollout/walk_check.hpp): the 100 s rollout ends at its
+// horizon, not by a fall (COM below E_fail's height), divergence or a stall (less than 0.1 m of
+// progress in a 5 s window). Every walker is also walked from 10 starts whose joint velocities are
 // perturbed by a seeded N(0, 0.05 rad/s) (rollout/start_perturbations.hpp, seed 2009; the
 // optimizations never saw these starts), and the test checks the number that walk against the
 // number the reproduction page reports. The speed, step length, power ratio (eqs. 13-14) and
@@ -26,6 +27,7 @@
 #include "gaitsynth/controllers/fsm/wang2009_json.hpp"
 #include "gaitsynth/gaitsynth.hpp"
 #include "gaitsynth/rollout/start_perturbations.hpp"
+#include "gaitsynth/rollout/walk_check.hpp"
 #include "gaitsynth/synthesis/wang2009_simulation.hpp"
 
 using namespace gaitsynth;
@@ -72,6 +74,7 @@ void check_walker_on(const reported& w, const Terrain& ground) {
   return;
 #endif
   opt.duration = 100.0;
+  opt = walk_options(opt);  // rollout/walk_check.hpp: a stall is not a walk
 
   trajectory tr;
   opt.record = &tr;
@@ -81,7 +84,7 @@ void check_walker_on(const reported& w, const Terrain& ground) {
   const rollout_result r = rollout(m, mixed_pd_actuator{}, cc, obj, ground, integ,
                                    std::span<const double>(p), opt, scratch, states);
   INFO(w.file << ": " << to_string(r.reason) << " after " << r.time << " s");
-  REQUIRE(r.reason == stop_reason::horizon);
+  REQUIRE(walked(r));
   const wang2009_breakdown rep = wang2009_report(obj, *states.objective, r, opt);
   CHECK(rep.average_speed == Approx(w.speed).margin(0.005));
   CHECK(rep.step_length == Approx(w.step_length).margin(0.005));
@@ -101,7 +104,7 @@ void check_walker_on(const reported& w, const Terrain& ground) {
   }
 
   opt.record = nullptr;
-  int walked = 0;
+  int walking = 0;
   int k = 0;
   for (const Eigen::VectorXd& dv : joint_velocity_perturbations(m, 10, 0.05, 2009)) {
     opt.initial_velocity_offset = dv;
@@ -110,9 +113,9 @@ void check_walker_on(const reported& w, const Terrain& ground) {
                                       integ, std::span<const double>(p), opt, scratch);
     UNSCOPED_INFO("perturbed start " << k++ << ": " << to_string(rk.reason) << " after " << rk.time
                                      << " s");
-    walked += rk.reason == stop_reason::horizon;
+    walking += walked(rk);
   }
-  CHECK(walked == w.perturbed_walked);
+  CHECK(walking == w.perturbed_walked);
 }
 
 /// Checks walker w on the ground it was optimized on: its info's slope (uphill along +x).

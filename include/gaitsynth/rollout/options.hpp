@@ -12,6 +12,15 @@
 
 namespace gaitsynth {
 
+/// Stall detection: a walker that stays upright but stops advancing has not walked. The rollout
+/// stops with stop_reason::stalled when the COM has advanced less than `min_progress` along +x
+/// (the walking direction of every model here) over a window of `window` seconds; windows are
+/// consecutive from the start, so a stall is caught within two windows. Off while window is 0.
+struct stall_detection {
+  double window = 0.0;        ///< s; 0: off
+  double min_progress = 0.1;  ///< m along +x per window
+};
+
 struct rollout_options {
   double dt = 1.0 / 2400.0;  ///< physics timestep, s (2400 Hz as in Wang et al. 2009/2012)
   double duration = 10.0;    ///< horizon, s (the papers evaluate 10 s rollouts)
@@ -27,6 +36,7 @@ struct rollout_options {
   bool detect_falls = true;
   double fall_height = 0.0;    ///< m; if > 0 used as is
   double fall_fraction = 0.5;  ///< else: this fraction of the initial COM height above terrain
+  stall_detection stall{};     ///< off by default (the optimizers' costs never see it)
 
   /// Joint dampers taken implicitly (backward Euler), off by default. The actuator's rate
   /// coefficients (actuator_with_joint_damping: kd of every PD servo whose torque is not clamped)

@@ -17,7 +17,8 @@
 ///
 /// Step k (t = t0 + k dt, computed, never accumulated, as Odeint's integrate_const does):
 ///   1. forward kinematics of (q, v); COM and COM velocity;
-///   2. stop if fallen (COM below the fall height above the terrain) or k reached the horizon;
+///   2. stop if fallen (COM below the fall height above the terrain), stalled (options.stall) or
+///      k reached the horizon;
 ///   3. clear external wrenches; penalty contact against the terrain; pushes (into ws.f_ext) — done
 ///      before sensing so that controllers see this step's contact flags;
 ///   4. the actuator's sensed values; push the sample into the delay history; once per controller
@@ -38,6 +39,7 @@
 ///   8. stop if q or v is no longer finite (cost +infinity; rollout/result.hpp).
 /// After the loop the observers see the state it stopped in, with the result.
 #include <Eigen/Core>
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <limits>
@@ -194,6 +196,11 @@ rollout_result rollout_impl(const model<Root>& m, const Actuator& act, C& ctrl,
                  "rollout_options: fall_height and fall_fraction must be finite (fraction >= 0), "
                  "got ",
                  opt.fall_height, " and ", opt.fall_fraction);
+  check_argument(std::isfinite(opt.stall.window) && opt.stall.window >= 0.0,
+                 "rollout_options::stall.window must be finite and >= 0 s, got ", opt.stall.window);
+  check_argument(std::isfinite(opt.stall.min_progress),
+                 "rollout_options::stall.min_progress must be finite, got ",
+                 opt.stall.min_progress);
   const double dt = opt.dt;
   ctrl.bind(params);
   const double period = static_cast<double>(ctrl.period());
@@ -427,6 +434,11 @@ rollout_result rollout_impl(const model<Root>& m, const Actuator& act, C& ctrl,
   std::int64_t k = 0, calls = 0, next_call = 0;
   stop_reason reason = stop_reason::horizon;
   vec3 com = res.com_initial, com_v = vec3::Zero();
+  // Stall windows (rollout_options::stall): the COM's x at the last window's end.
+  const std::int64_t stall_steps =
+      opt.stall.window > 0.0 ? std::max<std::int64_t>(1, std::llround(opt.stall.window / dt)) : 0;
+  std::int64_t next_stall_check = stall_steps > 0 ? stall_steps : -1;
+  double stall_x = res.com_initial.x();
   for (;; ++k) {
     const double t = t0 + static_cast<double>(k) * dt;
     s.t = t;
@@ -441,6 +453,14 @@ rollout_result rollout_impl(const model<Root>& m, const Actuator& act, C& ctrl,
         has_fallen(com.z() - ground.height(com.x(), com.y()), res.fall_height)) {
       reason = stop_reason::fell;
       break;
+    }
+    if (k == next_stall_check) {
+      if (com.x() - stall_x < opt.stall.min_progress) {
+        reason = stop_reason::stalled;
+        break;
+      }
+      stall_x = com.x();
+      next_stall_check += stall_steps;
     }
     if (k >= n_steps) break;
     // 3. contact and pushes

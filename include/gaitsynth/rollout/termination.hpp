@@ -14,7 +14,8 @@ enum class stop_reason : std::uint8_t {
   horizon,  ///< simulated the whole requested duration
   fell,     ///< the COM dropped below the fall height above the terrain (paper convention: a fall)
   non_finite,  ///< q or v stopped being finite (divergence: huge gains, too large a timestep, ...)
-  objective    ///< the objective asked to stop early (its done() returned true)
+  objective,   ///< the objective asked to stop early (its done() returned true)
+  stalled      ///< the COM advanced less than a stall window's distance (rollout_options::stall)
 };
 
 constexpr std::string_view to_string(stop_reason r) {
@@ -27,14 +28,16 @@ constexpr std::string_view to_string(stop_reason r) {
       return "non_finite";
     case stop_reason::objective:
       return "objective";
+    case stop_reason::stalled:
+      return "stalled";
   }
   return "unknown";
 }
 
 /// True when the reason means the rollout did not run to the horizon because something went wrong
-/// with the motion (fell, diverged). An objective's own early stop is not a failure.
+/// with the motion (fell, diverged, stalled). An objective's own early stop is not a failure.
 constexpr bool is_failure(stop_reason r) {
-  return r == stop_reason::fell || r == stop_reason::non_finite;
+  return r == stop_reason::fell || r == stop_reason::non_finite || r == stop_reason::stalled;
 }
 
 /// The fall test of the rollout loop: the COM height above the terrain directly below it is under

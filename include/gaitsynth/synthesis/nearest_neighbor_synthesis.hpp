@@ -37,6 +37,7 @@
 #include "gaitsynth/rollout/problem_cost.hpp"
 #include "gaitsynth/rollout/problem_with_variants.hpp"
 #include "gaitsynth/rollout/rollout.hpp"
+#include "gaitsynth/rollout/walk_check.hpp"
 
 namespace gaitsynth {
 
@@ -182,27 +183,9 @@ std::vector<sim_state> perturbed_starts(const model<Root>&, const sim_state& s,
   return out;
 }
 
-/// How a controller fares in a long test rollout (the paper's 70 s test).
-struct walk_check {
-  double seconds = 0.0;        ///< simulated time before the end or a fall, s
-  bool fell = false;           ///< stopped by a fall (or divergence)
-  double distance = 0.0;       ///< COM displacement along x, m
-  double average_speed = 0.0;  ///< distance / seconds, m/s
-  double cost = 0.0;           ///< objective value of the whole rollout
-  rollout_result result;
-};
-
-template <class Problem>
-walk_check check_walk(const Problem& prob, const Eigen::VectorXd& x, double seconds = 70.0,
-                      trajectory* record = nullptr, int record_every = 40) {
-  walk_check w;
-  w.result = prob.evaluate(x, seconds, record, record_every);
-  w.seconds = w.result.time;
-  w.fell = w.result.failed();
-  w.distance = w.result.com_final.x() - w.result.com_initial.x();
-  w.average_speed = w.seconds > 0 ? w.distance / w.seconds : 0.0;
-  w.cost = w.result.cost;
-  return w;
-}
+/// Sharon & van de Panne's test of a walk (their 70 s rollouts; check_walk with these criteria):
+/// run to the horizon without falling or stalling, at 0.3 m/s or more on average.
+inline constexpr walk_criteria sharon2005_walk_criteria{
+    .stall = {.window = 5.0, .min_progress = 0.1}, .min_average_speed = 0.3};
 
 }  // namespace gaitsynth
