@@ -26,7 +26,7 @@
 #include "gaitsynth/motion/keyframes_json.hpp"
 #include "gaitsynth/objectives/mass_distance.hpp"
 #include "sharon2005_common.hpp"
-#include "sharon2005_scenarios.hpp"
+#include "gaitsynth/synthesis/sharon2005_scenarios.hpp"
 
 #include <algorithm>
 #include <filesystem>

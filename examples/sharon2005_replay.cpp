@@ -30,7 +30,7 @@
 #include "gaitsynth/motion/keyframes_json.hpp"
 #include "gaitsynth/objectives/mass_distance.hpp"
 #include "gaitsynth/synthesis/nearest_neighbor_synthesis.hpp"
-#include "sharon2005_scenarios.hpp"
+#include "gaitsynth/synthesis/sharon2005_scenarios.hpp"
 #include "viewer_flags.hpp"
 
 namespace {

@@ -25,7 +25,7 @@
 #include "gaitsynth/objectives/mass_distance.hpp"
 #include "gaitsynth/synthesis/nearest_neighbor_synthesis.hpp"
 #include "gaitsynth/viz/filmstrip_svg.hpp"
-#include "sharon2005_scenarios.hpp"
+#include "gaitsynth/synthesis/sharon2005_scenarios.hpp"
 #include "viewer_flags.hpp"
 
 int main(int argc, char** argv) try {

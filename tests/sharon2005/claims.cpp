@@ -14,7 +14,7 @@
 #include <numbers>
 #include <string>
 
-#include "../../examples/sharon2005_scenarios.hpp"
+#include "gaitsynth/synthesis/sharon2005_scenarios.hpp"
 #include "gaitsynth/actuators/torque.hpp"
 #include "gaitsynth/contact/flat_terrain.hpp"
 #include "gaitsynth/contact/slope_terrain.hpp"

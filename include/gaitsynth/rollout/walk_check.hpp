@@ -71,15 +71,20 @@ inline const char* verdict(const walk_check& w) {
   return w.result.reason == stop_reason::horizon ? "too slow" : "stopped by the objective";
 }
 
-/// Parameters x of problem prob (rollout/problem.hpp) walked for `seconds` with c's stall
-/// detection, recorded into `record` when given.
+/// Parameters x of problem prob (rollout/problem.hpp; with variants, its main problem) walked for
+/// `seconds` with c's stall detection, recorded into `record` when given.
 template <class Problem>
 walk_check check_walk(const Problem& prob, const Eigen::VectorXd& x, double seconds = 70.0,
                       trajectory* record = nullptr, int record_every = 40,
                       const walk_criteria& c = {}) {
-  auto ctx = prob.make_context();
-  ctx.options.stall = c.stall;
-  return judge_walk(prob.evaluate(x, seconds, ctx, record, record_every), c);
+  if constexpr (requires { prob.main(); }) {
+    // A problem with variants (rollout/problem_with_variants.hpp): the walk is the main problem's.
+    return check_walk(prob.main(), x, seconds, record, record_every, c);
+  } else {
+    auto ctx = prob.make_context();
+    ctx.options.stall = c.stall;
+    return judge_walk(prob.evaluate(x, seconds, ctx, record, record_every), c);
+  }
 }
 
 }  // namespace gaitsynth

@@ -1,10 +1,12 @@
 #pragma once
-// The experiments of Sharon & van de Panne 2005 as data, shared by the examples/sharon2005_*.cpp
-// programs and the tests in tests/sharon2005/ (so a test checks exactly what an example runs).
-//
-// Figure 8 (robustness of the unmodified normal-walk controller): (a) torso mass 40 -> 28 kg,
-// (b) shin 0.44 -> 0.25 m with thigh 0.46 -> 0.6 m, (c) shin 0.44 -> 0.8 m, (d) bumpy terrain
-// with gradients up to 11 degrees, walked blindly (the controller senses nothing of it).
+/// \file synthesis/sharon2005_scenarios.hpp
+/// The experiments of Sharon & van de Panne 2005 as data, shared by the examples/sharon2005_*.cpp
+/// programs and the tests in tests/sharon2005/ (so a test checks exactly what an example runs),
+/// and the start state of a keyframed motion placed on any terrain.
+///
+/// Figure 8 (robustness of the unmodified normal-walk controller): (a) torso mass 40 -> 28 kg,
+/// (b) shin 0.44 -> 0.25 m with thigh 0.46 -> 0.6 m, (c) shin 0.44 -> 0.8 m, (d) bumpy terrain
+/// with gradients up to 11 degrees, walked blindly (the controller senses nothing of it).
 #include <Eigen/Core>
 #include <algorithm>
 #include <cmath>
@@ -14,12 +16,14 @@
 #include <string>
 #include <vector>
 
+#include "gaitsynth/contact/flat_terrain.hpp"
 #include "gaitsynth/contact/height_field_terrain.hpp"
-#include "gaitsynth/dynamics/kinematics.hpp"
+#include "gaitsynth/contact/terrain.hpp"
 #include "gaitsynth/models/sharon2005.hpp"
 #include "gaitsynth/motion/keyframes.hpp"
+#include "gaitsynth/rollout/rollout.hpp"
 
-namespace sharon_scenarios {
+namespace gaitsynth::sharon_scenarios {
 
 /// A planar bumpy profile along x (a height field with one row, which planar models query at
 /// y = 0): a sum of six sinusoids of wavelengths 0.5 to 2 m (by default: bumps, not hills) with
@@ -133,20 +137,16 @@ inline std::vector<body_variant> figure8_bodies() {
   return v;
 }
 
-/// The start state for a changed body: the target's first pose and velocity (joint angles and
-/// rates as keyframed), with the root lowered or raised so that the lowest foot point touches the
-/// ground, as for the original body.
-inline gaitsynth::sim_state start_state_for(
-    const gaitsynth::planar_model& m,
-    const gaitsynth::keyframe_motion<gaitsynth::planar_root>& target) {
-  gaitsynth::sim_state s = target.initial_state();
-  auto ws = gaitsynth::make_workspace(m);
-  gaitsynth::forward_kinematics(m, ws, s.q);
-  double lowest = 1e300;
-  for (const auto& c : m.contact_points)
-    lowest = std::min(lowest, gaitsynth::point_position(m, ws, c.body, c.position).z());
-  s.q[1] -= lowest;
+/// The start state for a body on a terrain: the target's first pose and velocity (joint angles and
+/// rates as keyframed), with the root lowered or raised so that the lowest contact point touches
+/// `ground` under it (place_on_terrain: flat ground, slopes, height fields, steps), as for the
+/// original body on flat ground.
+template <terrain T = flat_terrain>
+sim_state start_state_for(const planar_model& m, const keyframe_motion<planar_root>& target,
+                          const T& ground = T()) {
+  sim_state s = target.initial_state();
+  place_on_terrain(m, ground, s.q);
   return s;
 }
 
-}  // namespace sharon_scenarios
+}  // namespace gaitsynth::sharon_scenarios
