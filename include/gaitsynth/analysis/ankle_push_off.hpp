@@ -18,6 +18,7 @@
 /// the plain product that snap, not push-off, would decide where the power peaks.
 #include <algorithm>
 #include <array>
+#include <cstddef>
 #include <string>
 #include <vector>
 
@@ -26,6 +27,18 @@
 #include "gaitsynth/rollout/trajectory.hpp"
 
 namespace gaitsynth {
+
+namespace detail {
+/// The tenth (0 .. 9) of stance that phase (0 .. 1, 1 in the last) falls in.
+inline std::size_t stance_tenth(double phase) {
+  return static_cast<std::size_t>(std::min(9, static_cast<int>(10.0 * phase)));
+}
+/// Centre (0.05 .. 0.95) of the tenth where a power curve by tenths is largest.
+inline double curve_peak_fraction(const std::array<double, 10>& power_by_tenth) {
+  const auto top = std::max_element(power_by_tenth.begin(), power_by_tenth.end());
+  return 0.1 * static_cast<double>(top - power_by_tenth.begin()) + 0.05;
+}
+}  // namespace detail
 
 struct ankle_stance {
   double t_begin = 0.0, t_end = 0.0;  ///< s: first and last frame of contact
@@ -100,7 +113,7 @@ ankle_push_off_report ankle_push_off(const model<Root>& m, const trajectory& tr,
       const double tau = tr.frames[k].tau[vj];
       const double p = tau > 0.0 ? tau * tr.frames[k].v[vj] : 0.0;
       const double phase = (tr.frames[k].t - s.t_begin) / (s.t_end - s.t_begin);
-      const auto tenth = static_cast<std::size_t>(std::min(9, static_cast<int>(10.0 * phase)));
+      const std::size_t tenth = detail::stance_tenth(phase);
       s.power_by_tenth[tenth] += p;
       ++in_tenth[tenth];
       if (p > s.peak_power) {
@@ -126,9 +139,7 @@ ankle_push_off_report ankle_push_off(const model<Root>& m, const trajectory& tr,
   out.mean_peak_power /= count;
   out.mean_peak_fraction /= count;
   for (double& p : out.mean_power_by_tenth) p /= count;
-  const auto top = std::max_element(out.mean_power_by_tenth.begin(), out.mean_power_by_tenth.end());
-  out.mean_curve_peak_fraction =
-      0.1 * static_cast<double>(top - out.mean_power_by_tenth.begin()) + 0.05;
+  out.mean_curve_peak_fraction = detail::curve_peak_fraction(out.mean_power_by_tenth);
   return out;
 }
 

@@ -15,6 +15,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "gaitsynth/analysis/ankle_push_off.hpp"
 #include "gaitsynth/error.hpp"
 #include "gaitsynth/io/normative_gait.hpp"
 
@@ -67,7 +68,7 @@ inline human_ankle_push_off_report human_ankle_push_off(
   for (std::size_t k = 0; k <= k_off; ++k) {
     const double p = tau(k) > 0.0 ? tau(k) * qdot(k) : 0.0;
     const double phase = a.percent[k] / out.toe_off_percent;
-    const auto tenth = static_cast<std::size_t>(std::min(9, static_cast<int>(10.0 * phase)));
+    const std::size_t tenth = detail::stance_tenth(phase);
     out.power_by_tenth[tenth] += p;
     ++in_tenth[tenth];
     if (p > out.peak_power) {
@@ -77,8 +78,7 @@ inline human_ankle_push_off_report human_ankle_push_off(
   }
   for (std::size_t i = 0; i < 10; ++i)
     if (in_tenth[i] > 0) out.power_by_tenth[i] /= in_tenth[i];
-  const auto top = std::max_element(out.power_by_tenth.begin(), out.power_by_tenth.end());
-  out.curve_peak_fraction = 0.1 * static_cast<double>(top - out.power_by_tenth.begin()) + 0.05;
+  out.curve_peak_fraction = detail::curve_peak_fraction(out.power_by_tenth);
   return out;
 }
 
