@@ -278,16 +278,15 @@ TEST_CASE("cmaes stopping criteria are reported", "[optimizers]") {
     CHECK(es.max_iterations() == static_cast<std::int64_t>(100 + 150 * 169 / std::sqrt(10.0)));
   }
   SECTION("target_value is strict: a best value equal to the target does not stop") {
-    const auto flat = [](const Eigen::VectorXd&) { return 1.0; };  // every value is exactly 1
-    cmaes_options o;
-    o.stop.max_iterations = 5;
-    o.stop.target_value = 1.0;
-    const auto at = minimize(cmaes(space10, o), flat);
+    const auto [at, below] = gaitsynth::testing::minimize_flat_at_and_below_target([&](double t) {
+      cmaes_options o;
+      o.stop.max_iterations = 5;
+      o.stop.target_value = t;
+      return cmaes(space10, o);
+    });
     CHECK(at.value == 1.0);
     CHECK(at.stopped == stop_criterion::max_iterations);
     CHECK(at.iterations == 5);
-    o.stop.target_value = std::nextafter(1.0, 2.0);  // 1 is now strictly below the target
-    const auto below = minimize(cmaes(space10, o), flat);
     CHECK(below.stopped == stop_criterion::target_value);
     CHECK(below.iterations == 1);
   }

@@ -4,10 +4,12 @@
 #include <gaitsynth/optimizers/test_functions.hpp>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <filesystem>
 #include <random>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace gaitsynth::testing {
@@ -50,6 +52,15 @@ inline bool identical(const Eigen::VectorXd& a, const Eigen::VectorXd& b) {
 }
 inline bool identical(const Eigen::MatrixXd& a, const Eigen::MatrixXd& b) {
   return a.rows() == b.rows() && a.cols() == b.cols() && (a.array() == b.array()).all();
+}
+
+/// The strict target on a flat objective (every value exactly 1): make(target) builds the
+/// optimizer; returns its results with target_value = 1 (equality: must not stop on the target)
+/// and with the next double above 1 (1 is then strictly below it: must stop at once).
+template <class Make>
+std::pair<optimization_result, optimization_result> minimize_flat_at_and_below_target(Make make) {
+  const auto flat = [](const Eigen::VectorXd&) { return 1.0; };
+  return {minimize(make(1.0), flat), minimize(make(std::nextafter(1.0, 2.0)), flat)};
 }
 
 }  // namespace gaitsynth::testing

@@ -119,17 +119,18 @@ TEST_CASE("Restarts honour the global evaluation budget and max_restarts", "[opt
 }
 
 TEST_CASE("Each run's stop criterion is reported, the target one strictly", "[optimizers]") {
-  // A flat objective: every value, hence every best value, is exactly 1.
-  const auto flat = [](const Eigen::VectorXd&) { return 1.0; };
-  cmaes_options o;
-  o.stop.max_iterations = 3;  // per run
-  restart_options ro;
-  ro.strategy = restart_strategy::ipop;
-  ro.max_restarts = 1;
+  // A flat objective: every value, hence every best value, is exactly 1 (the target 1 is reached
+  // with equality only: no stop; the next double above it is reached strictly: a stop).
   const auto space = parameter_space::unbounded(Eigen::VectorXd::Zero(10));
-
-  o.stop.target_value = 1.0;  // reached with equality only: no stop
-  const auto at = minimize(cmaes_restarts(space, o, ro), flat);
+  const auto [at, below] = gaitsynth::testing::minimize_flat_at_and_below_target([&](double t) {
+    cmaes_options o;
+    o.stop.max_iterations = 3;  // per run
+    o.stop.target_value = t;
+    restart_options ro;
+    ro.strategy = restart_strategy::ipop;
+    ro.max_restarts = 1;
+    return cmaes_restarts(space, o, ro);
+  });
   CHECK(at.stopped == stop_criterion::max_iterations);
   CHECK(at.restarts == 1);
   check_run_records(at);
@@ -142,8 +143,6 @@ TEST_CASE("Each run's stop criterion is reported, the target one strictly", "[op
     CHECK(run.best_value == 1.0);
   }
 
-  o.stop.target_value = std::nextafter(1.0, 2.0);  // now 1 is strictly below the target
-  const auto below = minimize(cmaes_restarts(space, o, ro), flat);
   CHECK(below.stopped == stop_criterion::target_value);
   CHECK(below.restarts == 0);
   check_run_records(below);

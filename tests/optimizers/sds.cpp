@@ -119,17 +119,16 @@ TEST_CASE("SDS rejects bad options, naming the value", "[optimizers]") {
 }
 
 TEST_CASE("SDS: target_value is strict, a best value equal to it does not stop", "[optimizers]") {
-  const auto flat = [](const Eigen::VectorXd&) { return 1.0; };  // every value is exactly 1
   const auto space = parameter_space::unbounded(Eigen::VectorXd::Zero(3));
-  sds_options o;
-  o.stop.max_iterations = 5;
-  o.stop.target_value = 1.0;
-  const auto at = minimize(sds(space, o), flat);
+  const auto [at, below] = gaitsynth::testing::minimize_flat_at_and_below_target([&](double t) {
+    sds_options o;
+    o.stop.max_iterations = 5;
+    o.stop.target_value = t;
+    return sds(space, o);
+  });
   CHECK(at.value == 1.0);
   CHECK(at.stopped == stop_criterion::max_iterations);
   CHECK(at.iterations == 5);
-  o.stop.target_value = std::nextafter(1.0, 2.0);  // 1 is now strictly below the target
-  const auto below = minimize(sds(space, o), flat);
   CHECK(below.stopped == stop_criterion::target_value);
   CHECK(below.iterations == 1);  // the evaluation of the initial point
 }
