@@ -4,6 +4,7 @@
 #include <cstdint>
 #include <numbers>
 #include <random>
+#include <vector>
 
 #include "gaitsynth/detail/standard_normal.hpp"
 #include "gaitsynth/dynamics.hpp"
@@ -24,7 +25,8 @@ TEMPLATE_TEST_CASE("integrate and difference are inverse", "[dynamics][configura
     integrate_configuration(m, q, v, 0.7, q1);
     difference_configuration(m, q, q1, v1);
     REQUIRE_THAT(v1, is_approx(0.7 * v, 1e-12, 1e-12));
-    if constexpr (std::is_same_v<TestType, floating_root>) REQUIRE(q1.segment<4>(3).norm() == Approx(1.0).epsilon(1e-15));
+    if constexpr (std::is_same_v<TestType, floating_root>)
+      REQUIRE(q1.segment<4>(3).norm() == Approx(1.0).epsilon(1e-15));
     // In place.
     Eigen::VectorXd q2 = q;
     integrate_configuration(m, q2, v, 0.7, q2);
@@ -49,7 +51,8 @@ TEST_CASE("floating root: body-frame angular velocity rotates about the body axe
   // Translation velocity is in world axes, independent of the orientation.
   auto ws = make_workspace(m);
   forward_kinematics(m, ws, q, v);
-  REQUIRE_THAT(Eigen::VectorXd(ws.body_linear_velocity[0]), is_approx(vec3(0.1, 0.2, 0.3), 1e-15, 1e-15));
+  REQUIRE_THAT(Eigen::VectorXd(ws.body_linear_velocity[0]),
+               is_approx(vec3(0.1, 0.2, 0.3), 1e-15, 1e-15));
   REQUIRE_THAT(Eigen::VectorXd(ws.body_angular_velocity[0]),
                is_approx(r0.toRotationMatrix() * vec3(0.4, 0, 0), 1e-15, 1e-15));
 }
@@ -86,6 +89,22 @@ TEST_CASE("normalize_configuration and random_configuration", "[dynamics][config
   REQUIRE_THROWS_WITH(normalize_configuration(m, q), Catch::Contains("quaternion has norm 0"));
 }
 
+namespace {
+/// A root body and one link below it with the DOFs `dofs`: the smallest model whose
+/// random_configuration draws are easy to follow.
+template <root_joint Root>
+model<Root> root_and_link(std::vector<dof_spec> dofs) {
+  model_builder<Root> b("root_and_link");
+  b.add_body({.name = "root", .mass = 1, .inertia = 0.1 * mat3::Identity()});
+  b.add_body({.name = "link",
+              .parent = "root",
+              .mass = 1,
+              .inertia = 0.1 * mat3::Identity(),
+              .dofs = std::move(dofs)});
+  return b.build();
+}
+}  // namespace
+
 // random_configuration must give the same numbers for the same seed on every standard library, so
 // its values are pinned to the engine's raw output (fixed by the standard) through the documented
 // formula u = (raw >> 11) 2^-53, never to a std:: distribution.
@@ -97,14 +116,8 @@ TEST_CASE("random_configuration draws are pinned to the engine's raw output",
   SECTION("the standard's own check value") {
     // [rand.predef]: the 10000th output of a default-constructed std::mt19937_64 is
     // 9981545732273789042, so this value holds whatever engine implementation is linked.
-    model_builder<fixed_root> b("one_joint");
-    b.add_body({.name = "base", .mass = 1, .inertia = 0.1 * mat3::Identity()});
-    b.add_body({.name = "link",
-                .parent = "base",
-                .mass = 1,
-                .inertia = 0.1 * mat3::Identity(),
-                .dofs = {{.name = "hinge", .limit = {.lower = -0.5, .upper = 1.0}}}});
-    const auto m = b.build();
+    const auto m =
+        root_and_link<fixed_root>({{.name = "hinge", .limit = {.lower = -0.5, .upper = 1.0}}});
     std::mt19937_64 rng;
     rng.discard(9999);
     const Eigen::VectorXd q = random_configuration(m, rng);
@@ -114,15 +127,9 @@ TEST_CASE("random_configuration draws are pinned to the engine's raw output",
   }
 
   SECTION("planar root: x, z, pitch, then the joints, one raw draw each") {
-    model_builder<planar_root> b("planar_two_joints");
-    b.add_body({.name = "trunk", .mass = 1, .inertia = 0.1 * mat3::Identity()});
-    b.add_body({.name = "leg",
-                .parent = "trunk",
-                .mass = 1,
-                .inertia = 0.1 * mat3::Identity(),
-                .dofs = {{.name = "hip", .limit = {.lower = -0.5, .upper = 1.0}},
-                         {.name = "knee", .limit = {.lower = -2.5, .upper = 0.0}}}});
-    const auto m = b.build();
+    const auto m =
+        root_and_link<planar_root>({{.name = "hip", .limit = {.lower = -0.5, .upper = 1.0}},
+                                    {.name = "knee", .limit = {.lower = -2.5, .upper = 0.0}}});
     std::mt19937_64 rng(2009), raw(2009);
     const Eigen::VectorXd q = random_configuration(m, rng);
     REQUIRE(q[0] == -1.0 + 2.0 * uniform01_of(raw()));
@@ -134,14 +141,8 @@ TEST_CASE("random_configuration draws are pinned to the engine's raw output",
   }
 
   SECTION("floating root: translation, the shared normal draw for the quaternion, joints") {
-    model_builder<floating_root> b("floating_one_joint");
-    b.add_body({.name = "pelvis", .mass = 1, .inertia = 0.1 * mat3::Identity()});
-    b.add_body({.name = "leg",
-                .parent = "pelvis",
-                .mass = 1,
-                .inertia = 0.1 * mat3::Identity(),
-                .dofs = {{.name = "hip", .limit = {.lower = -0.5, .upper = 1.0}}}});
-    const auto m = b.build();
+    const auto m =
+        root_and_link<floating_root>({{.name = "hip", .limit = {.lower = -0.5, .upper = 1.0}}});
     std::mt19937_64 rng(7), raw(7);
     const Eigen::VectorXd q = random_configuration(m, rng);
     for (int i = 0; i < 3; ++i) REQUIRE(q[i] == -1.0 + 2.0 * uniform01_of(raw()));
