@@ -1,5 +1,6 @@
 // analysis/human_ankle_push_off.hpp on hand-made curves whose power is known in closed form, and
 // on the adult of data/normative_gait/ (Falisse et al. 2019), whose push-off is the reference.
+#include <array>
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <numbers>
@@ -78,6 +79,10 @@ TEST_CASE("human_ankle_push_off: the adult's plantarflexors push off just before
   CHECK(r.peak_power > 100.0);
   CHECK(r.peak_power < 400.0);
   CHECK(*std::min_element(r.power_by_tenth.begin() + 3, r.power_by_tenth.begin() + 7) < 0.0);
+  // The figures docs/reproductions/wang2009.md gives (toe-off at 64 %, W by tenth, rounded).
+  CHECK(r.toe_off_percent == Approx(63.64).margin(0.01));
+  constexpr std::array<double, 10> page{0, 0, -5, -19, -22, -34, -31, 23, 163, 94};
+  for (std::size_t i = 0; i < 10; ++i) CHECK(r.power_by_tenth[i] == Approx(page[i]).margin(0.5));
 }
 
 TEST_CASE("human_ankle_push_off: bad input names what is wrong",

@@ -344,7 +344,9 @@ TEST_CASE("wang2009: Fig. 4's walker with E_ang walks 100 s", "[wang2009][claim]
                 0.638,
                 {0.788, 0.054, 0.158},
                 10,
-                {false, false}});
+                {false, false},
+                false,
+                23.2});
 }
 
 // Fig. 3's set-up (short, 1.0 m/s) with and without E_ratio.
