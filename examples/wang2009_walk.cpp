@@ -21,6 +21,10 @@
 //                 (on the file's slope and friction, scored with the weights it was optimized
 //                 with; --slope, --mu, --weight and --without override them)
 //   wang2009_walk --simbicon [--check-seconds S] [--out DIR]     (the SIMBICON baseline)
+//   mpirun -np R wang2009_walk --mpi [any optimization flags]
+//                 (the same optimization spread over R processes, on one host or many, with the
+//                 same result; --threads is then per process. Built where CMake finds MPI:
+//                 optimizers/mpi_evaluator.hpp, docs/scaling.md)
 //
 // Robust optimization (beyond the paper): --robust-starts K adds K rollouts per candidate from
 // starts whose joint velocities are perturbed by a seeded N(0, start_sigma^2), and
@@ -47,6 +51,7 @@
 #include <numbers>
 #include <optional>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 #include "gaitsynth/analysis/ankle_push_off.hpp"
@@ -63,6 +68,9 @@
 #include "gaitsynth/synthesis/wang2009_search_space.hpp"
 #include "gaitsynth/synthesis/wang2009_simulation.hpp"
 #include "viewer_flags.hpp"
+#ifdef GAITSYNTH_HAVE_MPI
+#include "gaitsynth/optimizers/mpi_evaluator.hpp"
+#endif
 
 using namespace gaitsynth;
 namespace fs = std::filesystem;
@@ -92,6 +100,7 @@ struct cli {
   double slope_deg = 0.0;  // uphill slope along +x (Sec. 5, "Changing terrain")
   double mu = 10.0;        // ground friction (Sec. 4.2; 0.8 and 0.3 in Sec. 5)
   bool slope_given = false, mu_given = false;
+  bool mpi = false;     // --mpi: evaluate on the processes of MPI_COMM_WORLD
   std::string command;  // the command line, kept in the saved controller
   viz_outputs viz;
 };
@@ -104,7 +113,7 @@ struct cli {
                "       [--horizon S] [--sigma S] [--robust-starts K] [--start-sigma S]"
                " [--robust-pushes K] [--push-force N]\n"
                "       [--without TERM]... [--weight TERM=W]... [--bound PARAM=LO:HI]...\n"
-               "       [--slope DEG] [--mu MU]\n"
+               "       [--slope DEG] [--mu MU] [--mpi (under mpirun)]\n"
                "       "
             << name << " --replay CONTROLLER.json [--check-seconds S] [--out DIR]\n"
             << "       " << name << " --simbicon [--check-seconds S] [--out DIR]\n"
@@ -139,7 +148,13 @@ cli parse(int argc, char** argv) {
       c.out = value();
     else if (a == "--resume")
       c.resume = true;
-    else if (a == "--init")
+    else if (a == "--mpi") {
+#ifndef GAITSYNTH_HAVE_MPI
+      throw std::invalid_argument(
+          "--mpi: this build has no MPI (install Open MPI, libopenmpi-dev, and configure again)");
+#endif
+      c.mpi = true;
+    } else if (a == "--init")
       c.init = value();
     else if (a == "--replay")
       c.replay = value();
@@ -373,16 +388,27 @@ int optimize_and_check(const floating_model& m, const cli& c, const wang2009_con
   Eigen::VectorXd best = Eigen::Map<const Eigen::VectorXd>(x0.data(), std::ssize(x0));
   double best_cost = prob.cost(best, c.horizon);
   optimization_result res;
-  // CMA-ES on `problem`'s cost at the horizon: the paper's problem or one with robust variants.
-  auto optimize = [&](const auto& problem) {
+  bool served = false;  // --mpi, ranks other than 0: they evaluated, rank 0 reports
+  // CMA-ES on `problem`'s cost at the horizon: the paper's problem or one with robust variants,
+  // evaluated by `eval` (a thread pool, or the processes of an MPI job).
+  auto optimize_with = [&](const auto& problem, auto& eval) {
+    problem_contexts ctx(problem, eval.thread_count());
+    problem_cost cost(problem, c.horizon, ctx);
+#ifdef GAITSYNTH_HAVE_MPI
+    if constexpr (std::is_same_v<std::decay_t<decltype(eval)>, mpi_evaluator>) {
+      if (!eval.is_root()) {
+        eval.serve(cost);
+        served = true;
+        return;
+      }
+    }
+#endif
     cmaes_options co;
     co.sigma0 = c.sigma;
     co.seed = c.seed;
     co.stop.max_iterations = c.iterations;
     co.stop.no_improvement_iterations = 300;
     cmaes opt_cma(search_space(m, ctrl, x0, c.bounds), co);
-    thread_pool_evaluator pool(c.threads);
-    problem_contexts ctx(problem, pool.thread_count());
     run_options ro;
     ro.progress = &std::cerr;
     ro.progress_interval = 10.0;
@@ -395,10 +421,22 @@ int optimize_and_check(const floating_model& m, const cli& c, const wang2009_con
       if (st.iteration % 10 == 0 && std::isfinite(opt_cma.best_value()))
         save(stem + ".controller.json", c, ctrl, opt_cma.best_x(), opt_cma.best_value());
     };
-    res = minimize(opt_cma, problem_cost(problem, c.horizon, ctx), pool, ro, keep_best);
+    res = minimize(opt_cma, cost, eval, ro, keep_best);
     best = res.x;
     best_cost = res.value;
     save(stem + ".controller.json", c, ctrl, best, best_cost);
+  };
+  auto optimize = [&](const auto& problem) {
+#ifdef GAITSYNTH_HAVE_MPI
+    if (c.mpi) {
+      mpi_evaluator eval(MPI_COMM_WORLD, {.threads = c.threads});
+      optimize_with(problem, eval);
+      if (eval.is_root()) eval.release();
+      return;
+    }
+#endif
+    thread_pool_evaluator pool(c.threads);
+    optimize_with(problem, pool);
   };
   if (c.replay.empty()) {
     if (c.robust_starts == 0 && c.robust_pushes == 0) {
@@ -426,6 +464,7 @@ int optimize_and_check(const floating_model& m, const cli& c, const wang2009_con
       optimize(make_problem_with_variants(prob, std::move(variants)));
     }
   }
+  if (served) return 0;
   // Check: the walk for check_seconds, recorded, with the report of eq. 16's terms over it.
   trajectory tr;
   rollout_options check = walk_options(opt);  // rollout/walk_check.hpp: stall detection on
@@ -497,6 +536,13 @@ void set_weight(wang2009_weights& w, const std::string& name, double value) {
 
 int main(int argc, char** argv) try {
   cli c = parse(argc, argv);
+#ifdef GAITSYNTH_HAVE_MPI
+  std::optional<mpi_environment> mpi;
+  if (c.mpi) {
+    check_argument(c.replay.empty() && !c.simbicon, "--mpi: only an optimization runs under MPI");
+    mpi.emplace(argc, argv);
+  }
+#endif
   std::string from_shape;
   if (!c.replay.empty() || !c.init.empty()) {
     // The file names its shape; a controller for it is needed to read the parameter names.
