@@ -2,11 +2,13 @@
 // initialization with CMA-ES (Sec. 4.3: sigma 0.0025 on normalized parameters, default population,
 // stop after 300 iterations without improvement or 3000 iterations) on the objective of eq. 16,
 // evaluating 10 s rollouts (2400 Hz, kp 75000, kd 2000, mu 10, joint dampers taken implicitly) on
-// every core it is given. A run checkpoints every 10 iterations and continues from its checkpoint
-// with --resume.
+// every core it is given (--threads, default all). A run writes into its run folder (--out DIR,
+// default out/wang2009_walk/<UTC time>/), with options.json recording every option; it
+// checkpoints every 10 iterations and `--resume DIR` continues it with the same result.
 //
 //   wang2009_walk [--shape stocky] [--speed V] [--step-length S] [--iterations N]
-//                 [--threads N] [--seed K] [--out DIR] [--resume] [--init FILE]
+//                 [--threads N] [--seed K] [--out DIR] [--init FILE]
+//   wang2009_walk --resume DIR [--threads N]
 //                 (--init with --shape of another body carries the controller to it, gains
 //                 scaled by the weights: controllers/fsm/wang2009_shape_transfer.hpp)
 //                 [--check-seconds S] [--horizon S] [--sigma S]
@@ -34,7 +36,7 @@
 // parameters whatever the thread count.
 //
 // Every form takes the viewer flags (--html FILE, --filmstrip FILE, --csv FILE, ...;
-// examples/viewer_flags.hpp) for the check rollout.
+// examples/command_line.hpp) for the check rollout. --help lists every flag with its default.
 //
 // Writes DIR/wang2009_<shape>.controller.json (parameters with their names), .convergence.csv,
 // .checkpoint, .csv (the trajectory of the check rollout) and prints the objective's report on
@@ -54,6 +56,7 @@
 #include <type_traits>
 #include <vector>
 
+#include "command_line.hpp"
 #include "gaitsynth/analysis/ankle_push_off.hpp"
 #include "gaitsynth/analysis/arm_swing.hpp"
 #include "gaitsynth/analysis/torso_lean.hpp"
@@ -67,7 +70,6 @@
 #include "gaitsynth/rollout/start_perturbations.hpp"
 #include "gaitsynth/synthesis/wang2009_search_space.hpp"
 #include "gaitsynth/synthesis/wang2009_simulation.hpp"
-#include "viewer_flags.hpp"
 #ifdef GAITSYNTH_HAVE_MPI
 #include "gaitsynth/optimizers/mpi_evaluator.hpp"
 #endif
@@ -82,9 +84,9 @@ struct cli {
   bool shape_given = false;  // --shape with --init: carry the controller to that shape
   std::optional<double> speed, step_length;
   long long iterations = 3000;
-  unsigned threads = 2;
+  unsigned threads = 0;  // every core
   unsigned long long seed = 1;
-  fs::path out = "out";
+  fs::path out;  // the run folder
   bool resume = false;
   std::string init, replay;
   bool simbicon = false;
@@ -100,111 +102,121 @@ struct cli {
   double slope_deg = 0.0;  // uphill slope along +x (Sec. 5, "Changing terrain")
   double mu = 10.0;        // ground friction (Sec. 4.2; 0.8 and 0.3 in Sec. 5)
   bool slope_given = false, mu_given = false;
-  bool mpi = false;     // --mpi: evaluate on the processes of MPI_COMM_WORLD
-  std::string command;  // the command line, kept in the saved controller
+  bool mpi = false;        // --mpi: evaluate on the processes of MPI_COMM_WORLD
+  std::string command;     // the command line, kept in the saved controller
+  std::string out_arg;     // --out as given (empty: the default run folder)
+  nlohmann::json options;  // every option's effective value, for DIR/options.json
   viz_outputs viz;
 };
 
-[[noreturn]] void usage(const char* name) {
-  std::cerr << "usage: " << name
-            << " [--shape NAME] [--speed M_S] [--step-length M] [--iterations N] [--threads N]\n"
-               "       [--seed K] [--out DIR] [--resume] [--init CONTROLLER.json]"
-               " [--check-seconds S]\n"
-               "       [--horizon S] [--sigma S] [--robust-starts K] [--start-sigma S]"
-               " [--robust-pushes K] [--push-force N]\n"
-               "       [--without TERM]... [--weight TERM=W]... [--bound PARAM=LO:HI]...\n"
-               "       [--slope DEG] [--mu MU] [--mpi (under mpirun)]\n"
-               "       "
-            << name << " --replay CONTROLLER.json [--check-seconds S] [--out DIR]\n"
-            << "       " << name << " --simbicon [--check-seconds S] [--out DIR]\n"
-            << viewer_flags::help();
-  std::exit(2);
-}
-
+/// The command line (examples/command_line.hpp). --resume DIR parses the options recorded in
+/// DIR/options.json again, so the run goes on exactly as it started.
 cli parse(int argc, char** argv) {
   cli c;
   for (int i = 0; i < argc; ++i) c.command += (i ? " " : "") + std::string(argv[i]);
-  c.viz = viewer_flags::extract(argc, argv);
-  for (int i = 1; i < argc; ++i) {
-    const std::string a = argv[i];
-    auto value = [&]() -> std::string {
-      if (i + 1 >= argc) usage(argv[0]);
-      return argv[++i];
-    };
-    if (a == "--shape") {
-      c.shape = value();
-      c.shape_given = true;
-    } else if (a == "--speed")
-      c.speed = std::stod(value());
-    else if (a == "--step-length")
-      c.step_length = std::stod(value());
-    else if (a == "--iterations")
-      c.iterations = std::stoll(value());
-    else if (a == "--threads")
-      c.threads = static_cast<unsigned>(std::stoul(value()));
-    else if (a == "--seed")
-      c.seed = std::stoull(value());
-    else if (a == "--out")
-      c.out = value();
-    else if (a == "--resume")
-      c.resume = true;
-    else if (a == "--mpi") {
-#ifndef GAITSYNTH_HAVE_MPI
-      throw std::invalid_argument(
-          "--mpi: this build has no MPI (install Open MPI, libopenmpi-dev, and configure again)");
-#endif
-      c.mpi = true;
-    } else if (a == "--init")
-      c.init = value();
-    else if (a == "--replay")
-      c.replay = value();
-    else if (a == "--check-seconds")
-      c.check_seconds = std::stod(value());
-    else if (a == "--simbicon")
-      c.simbicon = true;
-    else if (a == "--horizon")
-      c.horizon = std::stod(value());
-    else if (a == "--sigma")
-      c.sigma = std::stod(value());
-    else if (a == "--robust-starts")
-      c.robust_starts = std::stoi(value());
-    else if (a == "--start-sigma")
-      c.start_sigma = std::stod(value());
-    else if (a == "--robust-pushes")
-      c.robust_pushes = std::stoi(value());
-    else if (a == "--push-force")
-      c.push_force = std::stod(value());
-    else if (a == "--without")
-      c.without.push_back(value());
-    else if (a == "--weight") {
-      const std::string v = value();
-      const std::size_t eq = v.find('=');
-      check_argument(eq != std::string::npos, "--weight wants TERM=W, got '", v, "'");
-      c.weights[v.substr(0, eq)] = std::stod(v.substr(eq + 1));
-    } else if (a == "--bound") {
-      const std::string v = value();
-      const std::size_t eq = v.find('='), colon = v.find(':', eq);
-      check_argument(eq != std::string::npos && colon != std::string::npos,
-                     "--bound wants PARAM=LO:HI, got '", v, "'");
-      c.bounds[v.substr(0, eq)] = {std::stod(v.substr(eq + 1, colon - eq - 1)),
-                                   std::stod(v.substr(colon + 1))};
-    } else if (a == "--slope") {
-      c.slope_deg = std::stod(value());
-      c.slope_given = true;
-    } else if (a == "--mu") {
-      c.mu = std::stod(value());
-      c.mu_given = true;
-    } else
-      usage(argv[0]);
+  CLI::App app{
+      "Wang, Fleet & Hertzmann 2009: optimize a 3D walking controller (CMA-ES on eq. 16), or "
+      "replay a saved one, or run the SIMBICON baseline.",
+      "wang2009_walk"};
+  app.option_defaults()->always_capture_default();
+  std::string out, resume;
+  std::optional<double> speed, step_length;
+  std::vector<std::string> weights, bounds;
+  app.add_option("--shape", c.shape, "body shape (Fig. 8)")
+      ->check(CLI::IsMember({"stocky", "short", "tall", "thin", "overweight", "long_arm"}));
+  app.add_option("--speed", speed, "target speed of E_user, m/s (none: E_power / v_x)")
+      ->check(example_cli::in_range(0.01, 10.0));
+  app.add_option("--step-length", step_length, "target step length of E_user, m")
+      ->check(example_cli::in_range(0.01, 3.0));
+  app.add_option("--iterations", c.iterations, "CMA-ES iterations (Sec. 4.3: 3000)")
+      ->check(example_cli::integer_in(0, 10000000));
+  example_cli::add_threads(app, c.threads);
+  example_cli::add_seed(app, c.seed);
+  app.add_option("--out", out, "run folder (default out/wang2009_walk/<UTC time>/)");
+  app.add_option("--resume", resume,
+                 "continue the run in this folder, with the options it recorded (only --threads "
+                 "and --mpi may be given with it)");
+  app.add_option("--init", c.init, "start from this saved controller (JSON)")
+      ->check(CLI::ExistingFile);
+  app.add_option("--replay", c.replay, "replay this saved controller (JSON) instead")
+      ->check(CLI::ExistingFile);
+  app.add_flag("--simbicon", c.simbicon, "run the SIMBICON baseline instead");
+  app.add_option("--check-seconds", c.check_seconds, "length of the check rollout, s")
+      ->check(example_cli::in_range(0.01, 10000.0));
+  app.add_option("--horizon", c.horizon, "evaluation length, s (Sec. 4.3: 10)")
+      ->check(example_cli::in_range(0.01, 1000.0));
+  app.add_option("--sigma", c.sigma, "CMA-ES step size on [0, 1] (Sec. 4.3: 0.0025)")
+      ->check(example_cli::in_range(1e-9, 1.0));
+  app.add_option("--robust-starts", c.robust_starts, "rollouts per candidate from perturbed starts")
+      ->check(example_cli::integer_in(0, 1000));
+  app.add_option("--start-sigma", c.start_sigma, "joint-velocity perturbation of those, rad/s")
+      ->check(example_cli::in_range(0.0, 10.0));
+  app.add_option("--robust-pushes", c.robust_pushes, "rollouts per candidate with pushes")
+      ->check(example_cli::integer_in(0, 1000));
+  app.add_option("--push-force", c.push_force, "force of those pushes, N")
+      ->check(example_cli::in_range(0.0, 10000.0));
+  app.add_option("--without", c.without, "a term of eq. 16 at weight 0 (repeatable)");
+  app.add_option("--weight", weights, "TERM=W: a term's weight of eq. 16 (repeatable)")
+      ->check(example_cli::name_equals_number());
+  app.add_option("--bound", bounds, "PARAM=LO:HI: a parameter's search bounds (repeatable)")
+      ->check(example_cli::name_equals_number(true));
+  app.add_option("--slope", c.slope_deg, "uphill slope along +x, degrees")
+      ->check(example_cli::in_range(-44.9, 44.9));
+  app.add_option("--mu", c.mu, "ground friction (Sec. 4.2: 10)")
+      ->check(example_cli::in_range(1e-6, 1e6));
+  app.add_flag("--mpi", c.mpi, "evaluate on the processes of an MPI job (under mpirun)");
+  example_cli::add_viewer_flags(app, c.viz);
+  example_cli::parse(app, argc, argv);
+  if (!resume.empty()) {
+    for (const CLI::Option* o : example_cli::all_options(app)) {
+      const std::string n = o->get_lnames().empty() ? "" : o->get_lnames().front();
+      check_argument(o->count() == 0 || n == "resume" || n == "threads" || n == "mpi", "--resume ",
+                     resume, ": the run goes on with the options it recorded; --", n,
+                     " cannot be given with it (only --threads and --mpi)");
+    }
+    // (the thread count and MPI do not change the result: this command's own apply)
+    std::vector<std::string> kept{argv[0]};
+    for (const std::string& a :
+         example_cli::recorded_arguments(resume, {"out", "resume", "threads", "mpi"}))
+      kept.push_back(a);
+    const unsigned threads = c.threads;
+    const bool mpi = c.mpi;
+    c = cli{};
+    c.command = std::string(argv[0]) + " --resume " + resume;
+    std::vector<char*> av;
+    for (std::string& a : kept) av.push_back(a.data());
+    app.clear();
+    example_cli::parse(app, static_cast<int>(av.size()), av.data());
+    c.threads = threads;
+    c.mpi = mpi;
+    out = resume;
+    c.resume = true;
   }
-  check_argument(c.robust_starts >= 0, "--robust-starts must be >= 0, got ", c.robust_starts);
-  check_argument(c.robust_pushes >= 0, "--robust-pushes must be >= 0, got ", c.robust_pushes);
-  check_argument(std::isfinite(c.push_force), "--push-force is not finite (", c.push_force, ")");
-  check_argument(c.sigma > 0.0 && c.sigma <= 1.0, "--sigma must be in (0, 1], got ", c.sigma);
-  check_argument(c.horizon > 0.0, "--horizon must be > 0 s, got ", c.horizon);
-  check_argument(std::abs(c.slope_deg) < 45.0, "--slope must be in (-45, 45) degrees, got ",
-                 c.slope_deg);
-  check_argument(c.mu > 0.0 && std::isfinite(c.mu), "--mu must be > 0, got ", c.mu);
+#ifndef GAITSYNTH_HAVE_MPI
+  check_argument(!c.mpi,
+                 "--mpi: this build has no MPI (install Open MPI, libopenmpi-dev, and configure "
+                 "again)");
+#endif
+  c.shape_given = app.get_option("--shape")->count() > 0;
+  c.slope_given = app.get_option("--slope")->count() > 0;
+  c.mu_given = app.get_option("--mu")->count() > 0;
+  c.speed = speed;
+  c.step_length = step_length;
+  for (const std::string& v : weights) {
+    const std::size_t eq = v.find('=');
+    check_argument(eq != std::string::npos, "--weight wants TERM=W, got '", v, "'");
+    c.weights[v.substr(0, eq)] = std::stod(v.substr(eq + 1));
+  }
+  for (const std::string& v : bounds) {
+    const std::size_t eq = v.find('='), colon = v.find(':', eq);
+    check_argument(eq != std::string::npos && colon != std::string::npos,
+                   "--bound wants PARAM=LO:HI, got '", v, "'");
+    c.bounds[v.substr(0, eq)] = {std::stod(v.substr(eq + 1, colon - eq - 1)),
+                                 std::stod(v.substr(colon + 1))};
+  }
+  c.threads = example_cli::resolve_threads(c.threads);
+  c.out_arg = out;
+  c.options = example_cli::effective_options(app);
   return c;
 }
 
@@ -382,7 +394,7 @@ int optimize_and_check(const floating_model& m, const cli& c, const wang2009_con
                        const std::vector<double>& x0, const wang2009_objective_type& obj,
                        const rollout_options& opt, const Terrain& ground) {
   const rollout_problem prob{m, mixed_pd_actuator{}, ctrl, obj, ground, semi_implicit_euler{}, opt};
-  fs::create_directories(c.out);
+  if (!c.out.empty()) fs::create_directories(c.out);  // (empty on MPI ranks other than 0)
   const std::string stem = (c.out / ("wang2009_" + c.shape)).string();
 
   Eigen::VectorXd best = Eigen::Map<const Eigen::VectorXd>(x0.data(), std::ssize(x0));
@@ -542,7 +554,14 @@ int main(int argc, char** argv) try {
     check_argument(c.replay.empty() && !c.simbicon, "--mpi: only an optimization runs under MPI");
     mpi.emplace(argc, argv);
   }
+  const bool writes = !c.mpi || mpi_environment::rank() == 0;  // MPI: rank 0 writes the run
+#else
+  const bool writes = true;
 #endif
+  if (writes) {
+    c.out = example_cli::run_folder("wang2009_walk", c.out_arg);
+    if (!c.resume) example_cli::write_options(c.command, c.options, c.out);
+  }
   std::string from_shape;
   if (!c.replay.empty() || !c.init.empty()) {
     // The file names its shape; a controller for it is needed to read the parameter names.

@@ -2,7 +2,8 @@
 # Installs the Debian 12 packages gaitsynth needs, only those that are missing.
 #   scripts/install_deps.sh [--tests]   (--tests adds what only the test suite needs)
 set -euo pipefail
-pkgs=(g++ cmake ninja-build libeigen3-dev libboost-dev nlohmann-json3-dev)
+# libcli11-dev: the examples' command lines (header-only).
+pkgs=(g++ cmake ninja-build libeigen3-dev libboost-dev nlohmann-json3-dev libcli11-dev)
 if [[ "${1:-}" == "--tests" ]]; then
   # catch2 2.13: tests; libbenchmark-dev: benchmarks (built to keep them compiling);
   # libmujoco-dev: rigid-body oracle and benchmark peer; chromium: headless player test;

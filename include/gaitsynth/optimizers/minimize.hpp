@@ -186,8 +186,12 @@ optimization_result minimize(O&& opt, F&& objective, E&& eval, const run_options
     const double t = elapsed();
     write_row(status, t);
     if (ro.checkpoint_every > 0 && !ro.checkpoint_file.empty() &&
-        status.iteration % ro.checkpoint_every == 0)
+        status.iteration % ro.checkpoint_every == 0) {
+      // The log's rows up to the checkpoint reach the disk first, so a run killed after it
+      // and resumed keeps every row (the ones after the checkpoint are repeated).
+      if (log.is_open()) log.flush();
       save_checkpoint(opt, ro.checkpoint_file);
+    }
     if constexpr (std::is_invocable_r_v<bool, Callback&, const optimizer_status&> &&
                   !std::is_void_v<std::invoke_result_t<Callback&, const optimizer_status&>>) {
       if (!callback(status)) by_callback = true;
