@@ -14,6 +14,7 @@
 #include <string>
 #include <vector>
 
+#include "command_line.hpp"
 #include "gaitsynth/actuators/torque.hpp"
 #include "gaitsynth/contact/flat_terrain.hpp"
 #include "gaitsynth/controllers/nearest_neighbor_json.hpp"
@@ -23,13 +24,12 @@
 #include "gaitsynth/motion/keyframes.hpp"
 #include "gaitsynth/objectives/mass_distance.hpp"
 #include "gaitsynth/synthesis/nearest_neighbor_synthesis.hpp"
-#include "viewer_flags.hpp"
 
 namespace sharon_example {
 
 struct cli {
-  std::filesystem::path out_dir = "out";
-  unsigned threads = 2;
+  std::filesystem::path out_dir;           // the run folder
+  unsigned threads = 0;                    // 0: every core
   long long evaluations_per_episode = -1;  // -1: the example's default
   double check_seconds = 70.0;
   std::string keyframes;      // empty: the example's data file
@@ -42,100 +42,117 @@ struct cli {
   bool stage1_only = false;        // normal walk: stop after the paper's flat-ground stage
   std::vector<double> horizons;    // explicit episode horizons, s (overrides --max-horizon)
   std::string initial_controller;  // start from this saved controller instead of the keyframes
-  gaitsynth::viz_outputs viz;      // --html, --filmstrip, ... of the 70 s check (viewer_flags.hpp)
+  bool resume = false;             // --resume DIR: continue the run in DIR from its checkpoints
+  gaitsynth::viz_outputs viz;      // --html, --filmstrip, ... of the 70 s check
 };
 
-inline void usage(const char* name, const char* what) {
-  std::cerr
-      << name << ": " << what << "\n\n"
-      << "usage: " << name << " [options]\n"
-      << "  --out DIR                  output folder (default out/)\n"
-      << "  --threads N                evaluation threads (default 2)\n"
-      << "  --evaluations-per-episode N  SDS budget per bootstrapping episode\n"
-      << "  --check-seconds S          length of the final test rollout (default 70)\n"
-      << "  --max-horizon S            last bootstrapping episode, s (episodes every 0.2 s\n"
-      << "                             from 0.2 s; default: the example's, usually 2 s)\n"
-      << "  --horizons T1,T2,...       explicit episode horizons, s (e.g. 2,3,4)\n"
-      << "  --initial-controller FILE  start the search from a saved controller (JSON)\n"
-      << "  --bumpy-training N         also evaluate each candidate on N bumpy terrains\n"
-      << "                             (where the example supports it)\n"
-      << "  --body-training N          also evaluate each candidate on N randomized bodies\n"
-      << "                             (where the example supports it)\n"
-      << "  --stage1-only              normal walk: only the paper's flat-ground stage\n"
-      << "  --align-style              compare shapes only: the target follows the COM along x\n"
-      << "                             (for long episodes, where a small speed difference\n"
-      << "                             would otherwise dominate eq. 2)\n"
-      << "  --keyframes FILE           target motion (default: the data/sharon2005 file)\n"
-      << "  --single-start             evaluate each candidate from the first keyframe only\n"
-      << "                             (the paper's cost); default: also from 3 perturbed\n"
-      << "                             copies (velocity x0.9, x1.1, 1 cm higher)\n"
-      << "the 70 s check rollout (the filmstrip shows its first 3 s):\n"
-      << viewer_flags::help();
+/// The command line (command_line.hpp). The synthesis draws no random numbers (SDS is
+/// deterministic and the training terrains and bodies are fixed), so there is no --seed. The run
+/// folder (--out DIR, default out/<example>/<UTC time>/) gets options.json; --resume DIR parses
+/// the options recorded there again and continues from the run's checkpoints.
+inline cli parse(int argc, char** argv, const char* what) {
+  const std::string name = std::filesystem::path(argv[0]).filename().string();
+  cli c;
+  CLI::App app{what, name};
+  app.option_defaults()->always_capture_default();
+  std::string out, resume, horizons;
+  app.add_option("--out", out, "run folder (default out/" + name + "/<UTC time>/)");
+  app.add_option("--resume", resume,
+                 "continue the run in this folder with the options it recorded (only --threads "
+                 "may be given with it)");
+  example_cli::add_threads(app, c.threads);
+  app.add_option("--evaluations-per-episode", c.evaluations_per_episode,
+                 "SDS budget per bootstrapping episode (-1: the example's)")
+      ->check(example_cli::integer_in(-1, 100000000));
+  app.add_option("--check-seconds", c.check_seconds, "length of the final test rollout, s")
+      ->check(example_cli::in_range(0.01, 10000.0));
+  app.add_option("--max-horizon", c.max_horizon,
+                 "last bootstrapping episode, s (episodes every 0.2 s from 0.2 s; -1: the "
+                 "example's, usually 2 s)")
+      ->check(example_cli::in_range(-1.0, 60.0));
+  app.add_option("--horizons", horizons, "explicit episode horizons, s (e.g. 2,3,4)");
+  app.add_option("--initial-controller", c.initial_controller,
+                 "start the search from a saved controller (JSON)")
+      ->check(CLI::ExistingFile);
+  app.add_option("--bumpy-training", c.bumpy_training,
+                 "also evaluate each candidate on N bumpy terrains (-1: the example's)")
+      ->check(example_cli::integer_in(-1, 64));
+  app.add_option("--body-training", c.body_training,
+                 "also evaluate each candidate on N randomized bodies (-1: the example's)")
+      ->check(example_cli::integer_in(-1, 64));
+  app.add_flag("--stage1-only", c.stage1_only, "normal walk: only the paper's flat-ground stage");
+  app.add_flag("--align-style", c.align_style,
+               "compare shapes only: the target follows the COM along x (for long episodes)");
+  app.add_option("--keyframes", c.keyframes, "target motion (default: the data/sharon2005 file)")
+      ->check(CLI::ExistingFile);
+  app.add_flag("--single-start", c.single_start,
+               "evaluate each candidate from the first keyframe only (the paper's cost); "
+               "default: also from 3 perturbed copies (velocity x0.9, x1.1, 1 cm higher)");
+  example_cli::add_viewer_flags(app, c.viz, "the check rollout (the filmstrip its first 3 s)");
+  example_cli::parse(app, argc, argv);
+  std::string command;
+  for (int i = 0; i < argc; ++i) command += (i ? " " : "") + std::string(argv[i]);
+  if (!resume.empty()) {
+    for (const CLI::Option* o : example_cli::all_options(app)) {
+      const std::string n = o->get_lnames().empty() ? "" : o->get_lnames().front();
+      if (o->count() > 0 && n != "resume" && n != "threads")
+        throw std::invalid_argument("--resume " + resume +
+                                    ": the run goes on with the options "
+                                    "it recorded; --" +
+                                    n +
+                                    " cannot be given with it (only "
+                                    "--threads)");
+    }
+    std::vector<std::string> args{argv[0]};
+    for (const std::string& a :
+         example_cli::recorded_arguments(resume, {"out", "resume", "threads"}))
+      args.push_back(a);
+    const unsigned threads = c.threads;
+    c = cli{};
+    horizons.clear();
+    std::vector<char*> av;
+    for (std::string& a : args) av.push_back(a.data());
+    app.clear();
+    example_cli::parse(app, static_cast<int>(av.size()), av.data());
+    c.threads = threads;
+    c.resume = true;
+    out = resume;
+  }
+  if (!horizons.empty()) {
+    std::stringstream ss(horizons);
+    std::string item;
+    while (std::getline(ss, item, ',')) {
+      std::size_t used = 0;
+      double h = 0.0;
+      try {
+        h = std::stod(item, &used);
+      } catch (...) {
+        used = 0;
+      }
+      if (used != item.size() || !(h > 0.0 && h <= 600.0))
+        throw std::invalid_argument(
+            "--horizons: each horizon must be a number in (0, 600] s, "
+            "got '" +
+            item + "'");
+      c.horizons.push_back(h);
+    }
+    if (c.horizons.empty()) throw std::invalid_argument("--horizons needs at least one value");
+  }
+  if (c.max_horizon != -1.0 && c.max_horizon < 0.2)
+    throw std::invalid_argument("--max-horizon must be -1 or in [0.2, 60] s, got " +
+                                std::to_string(c.max_horizon));
+  c.threads = example_cli::resolve_threads(c.threads);
+  c.out_dir = example_cli::run_folder(name, out);
+  if (!c.resume)
+    example_cli::write_options(command, example_cli::effective_options(app), c.out_dir);
+  return c;
 }
 
-inline cli parse(int argc, char** argv, const char* what) {
-  cli c;
-  c.viz = viewer_flags::extract(argc, argv);  // --html FILE etc. (viewer_flags.hpp)
-  for (int i = 1; i < argc; ++i) {
-    const std::string a = argv[i];
-    auto value = [&]() -> std::string {
-      if (i + 1 >= argc) throw std::invalid_argument(a + " needs a value");
-      return argv[++i];
-    };
-    if (a == "--out")
-      c.out_dir = value();
-    else if (a == "--threads")
-      c.threads = static_cast<unsigned>(std::stoul(value()));
-    else if (a == "--evaluations-per-episode")
-      c.evaluations_per_episode = std::stoll(value());
-    else if (a == "--check-seconds")
-      c.check_seconds = std::stod(value());
-    else if (a == "--keyframes")
-      c.keyframes = value();
-    else if (a == "--single-start")
-      c.single_start = true;
-    else if (a == "--max-horizon")
-      c.max_horizon = std::stod(value());
-    else if (a == "--bumpy-training")
-      c.bumpy_training = std::stoi(value());
-    else if (a == "--body-training")
-      c.body_training = std::stoi(value());
-    else if (a == "--align-style")
-      c.align_style = true;
-    else if (a == "--stage1-only")
-      c.stage1_only = true;
-    else if (a == "--initial-controller")
-      c.initial_controller = value();
-    else if (a == "--horizons") {
-      std::stringstream ss(value());
-      std::string item;
-      while (std::getline(ss, item, ',')) {
-        const double h = std::stod(item);
-        if (!(h > 0.0 && h <= 600.0))
-          throw std::invalid_argument("--horizons: each horizon must be in (0, 600] s, got '" +
-                                      item + "'");
-        c.horizons.push_back(h);
-      }
-      if (c.horizons.empty()) throw std::invalid_argument("--horizons needs at least one value");
-    } else if (a == "--help" || a == "-h") {
-      usage(argv[0], what);
-      std::exit(0);
-    } else {
-      usage(argv[0], what);
-      throw std::invalid_argument("unknown option '" + a + "'");
-    }
-  }
-  if (c.threads < 1) throw std::invalid_argument("--threads must be >= 1");
-  if (c.body_training < -1 || c.body_training > 64)
-    throw std::invalid_argument("--body-training must be in [0, 64], got " +
-                                std::to_string(c.body_training));
-  if (c.bumpy_training < -1 || c.bumpy_training > 64)
-    throw std::invalid_argument("--bumpy-training must be in [0, 64], got " +
-                                std::to_string(c.bumpy_training));
-  if (c.max_horizon != -1.0 && !(c.max_horizon >= 0.2 && c.max_horizon <= 60.0))
-    throw std::invalid_argument("--max-horizon must be in [0.2, 60] s, got " +
-                                std::to_string(c.max_horizon));
-  return c;
+/// Checkpoints of a synthesis in the run folder, every 20 SDS probes, resumed with --resume.
+inline void checkpoint_into(gaitsynth::run_options& run, const cli& c, const std::string& stem) {
+  run.checkpoint_file = c.out_dir / (stem + ".checkpoint");
+  run.checkpoint_every = 20;
+  run.resume = c.resume;
 }
 
 /// The nearest-neighbor controller of the 7-link human: 12 nodes (6 free), input = torso pitch and
@@ -303,6 +320,7 @@ int synthesize_and_report(const std::string& name, const Problem& prob,
   so.run.progress_interval = 2.0;
   std::filesystem::create_directories(c.out_dir);
   so.run.log_file = c.out_dir / (name + ".convergence.csv");
+  checkpoint_into(so.run, c, name);
   const std::size_t n_params = prob.controller.num_parameters();
   const std::size_t n_starts = rollouts_per_evaluation(prob);
   std::cerr << name << ": optimizing " << n_params << " parameters of a "

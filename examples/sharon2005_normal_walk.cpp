@@ -25,8 +25,8 @@
 #include "gaitsynth/models/sharon2005.hpp"
 #include "gaitsynth/motion/keyframes_json.hpp"
 #include "gaitsynth/objectives/mass_distance.hpp"
-#include "sharon2005_common.hpp"
 #include "gaitsynth/synthesis/sharon2005_scenarios.hpp"
+#include "sharon2005_common.hpp"
 
 #include <algorithm>
 #include <filesystem>
@@ -57,6 +57,7 @@ int main(int argc, char** argv) try {
     so.run.progress_interval = 2.0;
     std::filesystem::create_directories(c.out_dir);
     so.run.log_file = c.out_dir / "sharon2005_normal_walk.stage1.convergence.csv";
+    sharon_example::checkpoint_into(so.run, c, "sharon2005_normal_walk.stage1");
     std::cerr << "sharon2005_normal_walk: stage 1 of 2, flat ground, episodes 0.2 .. 2 s\n";
     const nn_synthesis_result r1 = synthesize_nearest_neighbor(flat, so);
     before.evaluations = r1.evaluations;
