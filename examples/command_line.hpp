@@ -277,6 +277,14 @@ inline void write_options(const std::string& command, const nlohmann::json& opti
   if (!out) throw std::runtime_error("cannot write " + file.string());
 }
 
+/// The run's one-line JSON summary: on stdout, and as DIR/summary.json in the run folder.
+template <class Json>  // nlohmann::json or nlohmann::ordered_json
+void report_summary(const Json& summary, const std::filesystem::path& dir) {
+  std::cout << summary.dump() << std::endl;
+  if (dir.empty()) return;
+  std::ofstream(dir / "summary.json") << summary.dump(2) << "\n";
+}
+
 /// --resume DIR: the options recorded in DIR/options.json as a command line, but those named in
 /// `skip`, to be parsed again so the run continues exactly as it started.
 inline std::vector<std::string> recorded_arguments(const std::filesystem::path& dir,

@@ -386,7 +386,7 @@ int synthesize_and_report(const std::string& name, const Problem& prob,
             << name << ": controller  " << ctrl_path.string() << "\n"
             << name << ": trajectory  " << csv_path.string() << "\n"
             << name << ": convergence " << so.run.log_file.string() << "\n";
-  std::cout << summary.dump() << std::endl;
+  example_cli::report_summary(summary, c.out_dir);
   return 0;
 }
 

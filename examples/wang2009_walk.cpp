@@ -365,7 +365,7 @@ int run_simbicon(const floating_model& m, const cli& c) {
   sum["ankle_push_off"] = push_off_summary(m, tr);
   sum["arm_swing"] = arm_swing_summary(m, tr);
   add_torso_lean(sum, m, tr);
-  std::cout << sum.dump() << std::endl;
+  example_cli::report_summary(sum, c.out);
   return 0;
 }
 
@@ -523,7 +523,7 @@ int optimize_and_check(const floating_model& m, const cli& c, const wang2009_con
     walking += walked(pr);
   }
   sum["perturbed_starts_walked"] = walking;
-  std::cout << sum.dump() << std::endl;
+  example_cli::report_summary(sum, c.out);
   return 0;
 }
 
