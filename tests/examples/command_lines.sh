@@ -4,7 +4,8 @@
 #                                        message naming the flag and the value, and exit status 2;
 #                                        --help exits 0 and lists the flags with their defaults
 #   command_lines.sh resume EXE DIR STEM WAIT_FOR FLAGS... -- OTHER_FLAGS...
-#                                        EXE killed (SIGKILL) after its first checkpoint and
+#                                        EXE killed (SIGKILL) after its first checkpoint, then 3
+#                                        times at seeded random moments while resuming, and
 #                                        resumed with --resume DIR ends as the uninterrupted run
 set -uo pipefail
 mode=$1
@@ -70,13 +71,22 @@ case "$mode" in
     kill -9 "$pid" 2>/dev/null
     wait "$pid" 2>/dev/null
     [[ -f "$dir/cut/$wait_for" ]] || { echo "FAIL: no checkpoint to resume from"; exit 1; }
+    # Then killed again while resuming, at seeded random moments (0.05 to 0.8 s in).
+    RANDOM=2026
+    for k in 1 2 3; do
+      "$exe" --resume "$dir/cut" --threads 2 >/dev/null 2>&1 &
+      pid=$!
+      sleep "0.$(printf '%02d' $((5 + RANDOM % 75)))"
+      kill -9 "$pid" 2>/dev/null
+      wait "$pid" 2>/dev/null
+    done
     "$exe" --resume "$dir/cut" --threads 2 >/dev/null 2>"$dir/resume.log" ||
       { echo "FAIL: --resume"; tail -3 "$dir/resume.log"; exit 1; }
     kept() { grep -v -E '"(command|wall_seconds|threads)"' "$1"; }
     same() { diff -q <(kept "$1/$stem.controller.json") <(kept "$2/$stem.controller.json") >/dev/null &&
              cmp -s "$1/$stem.csv" "$2/$stem.csv"; }
     if same "$dir/whole" "$dir/cut"; then
-      echo "ok: $(basename "$exe") killed after its first checkpoint and resumed: the same result"
+      echo "ok: $(basename "$exe") killed after its first checkpoint and 3 times more while resuming: the same result"
     else
       echo "FAIL: $(basename "$exe"): the resumed run differs from the whole one"; fail=1
     fi
