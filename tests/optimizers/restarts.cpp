@@ -78,6 +78,32 @@ TEST_CASE("Rastrigin 10-D is solved with IPOP and BIPOP restarts", "[optimizers]
   }
 }
 
+TEST_CASE("IPOP multiplies the rounded or, as pycma does, the unrounded default", "[optimizers]") {
+  // A flat objective ends each run after its 2 iterations: the sequence of populations alone.
+  auto populations = [](int n, bool unrounded, int lambda) {
+    cmaes_options o;
+    o.stop.max_iterations = 2;  // per run
+    o.population_size = lambda;
+    restart_options ro;
+    ro.strategy = restart_strategy::ipop;
+    ro.max_restarts = 4;
+    ro.unrounded_population_base = unrounded;
+    cmaes_restarts es(parameter_space::unbounded(Eigen::VectorXd::Zero(n)), o, ro);
+    const auto r = minimize(es, [](const Eigen::VectorXd&) { return 1.0; });
+    std::vector<int> lambdas;
+    for (const run_record& run : r.runs) lambdas.push_back(run.population_size);
+    return lambdas;
+  };
+  // n = 10: 4 + 3 ln 10 = 10.908 -> 10, then 20, 40, ... or floor(21.8), floor(43.6), ...
+  CHECK(populations(10, false, 0) == std::vector<int>{10, 20, 40, 80, 160});
+  CHECK(populations(10, true, 0) == std::vector<int>{10, 21, 43, 87, 174});
+  // n = 40: 4 + 3 ln 40 = 15.067 -> 15, 30, 60, ... or 30, 60, 120, 241 (floor(241.07)).
+  CHECK(populations(40, false, 0) == std::vector<int>{15, 30, 60, 120, 240});
+  CHECK(populations(40, true, 0) == std::vector<int>{15, 30, 60, 120, 241});
+  // A population set by the user is the base either way.
+  CHECK(populations(10, true, 12) == std::vector<int>{12, 24, 48, 96, 192});
+}
+
 TEST_CASE("Restarts without restarting equal plain CMA-ES", "[optimizers]") {
   cmaes_options o;
   o.seed = 4;

@@ -3,7 +3,8 @@
 /// Restart strategies for CMA-ES, as a wrapper that is itself an `optimizer`:
 ///  - IPOP (Auger & Hansen, CEC 2005): after each run that stops on a local criterion (tol_fun,
 ///    tol_x, no_improvement...), restart with the population size multiplied by
-///    `population_factor` (2);
+///    `population_factor` (2): the rounded default's multiples, or with
+///    `unrounded_population_base` the unrounded default's (pycma's sequence);
 ///  - BIPOP (Hansen, GECCO BBOB 2009): interleave such "large population" runs (sigma0, lambda =
 ///    lambda_default * 2^i) with "small population" runs with lambda = floor(lambda_default *
 ///    max(1, lambda_large / lambda_default / 2)^(U^2)) and sigma = sigma0 * 10^(-2U), U ~ U(0, 1),
@@ -45,6 +46,10 @@ struct restart_options {
   restart_strategy strategy = restart_strategy::ipop;
   int max_restarts = 9;  ///< restarts after the first run (large-population runs for BIPOP)
   double population_factor = 2.0;  ///< lambda multiplier per (large) restart
+  /// Large restart i gets floor((4 + 3 ln n) * factor^i), the unrounded default multiplied (21,
+  /// 43, 87 at n = 10, as pycma's restarts), instead of the rounded default multiplied (20, 40,
+  /// 80). Where cmaes_options::population_size is set, that value is the base either way.
+  bool unrounded_population_base = false;
   /// Restart from a uniformly random mean in the initial region (the normalized bounds where
   /// finite, else initial mean +- 2 sigma0) instead of the initial mean.
   bool random_initial_mean = false;
@@ -262,6 +267,10 @@ class cmaes_restarts {
 
   /// Population of the i-th large-population restart (i = 0: the default lambda of run 0).
   int large_run_lambda(int i) const {
+    if (i > 0 && ro_.unrounded_population_base && base_.population_size == 0) {
+      const double unrounded = 4.0 + 3.0 * std::log(static_cast<double>(space_.size()));
+      return static_cast<int>(std::floor(unrounded * std::pow(ro_.population_factor, i)));
+    }
     return static_cast<int>(std::lround(lambda0_ * std::pow(ro_.population_factor, i)));
   }
 
