@@ -259,7 +259,7 @@ auto make_problem(const gaitsynth::planar_model& m,
   using namespace gaitsynth;
   rollout_options ro;
   ro.initial_state = target.initial_state();
-  nn_problem prob{
+  rollout_problem prob{
       m,      torque_actuator{},     c0, mass_distance<planar_root>(m, target, style_options(c)),
       ground, semi_implicit_euler{}, ro};
   set_starts(prob, c);

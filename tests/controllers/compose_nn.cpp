@@ -204,13 +204,13 @@ TEST_CASE("mass-distance objective inside CMA-ES (nearest-neighbor controller, 7
   rollout_options ro;
   ro.initial_state = target.initial_state();
   const nearest_neighbor_controller<planar_root> c0(m, target, {});
-  const nn_problem prob{m,
-                        torque_actuator{},
-                        c0,
-                        mass_distance<planar_root>(m, target),
-                        flat_terrain{},
-                        semi_implicit_euler{},
-                        ro};
+  const rollout_problem prob{m,
+                             torque_actuator{},
+                             c0,
+                             mass_distance<planar_root>(m, target),
+                             flat_terrain{},
+                             semi_implicit_euler{},
+                             ro};
   const Eigen::VectorXd x0 = prob.initial_parameters();
   REQUIRE(x0.size() == 72);
   const double f0 = prob.cost(x0, 0.2);
@@ -244,13 +244,13 @@ TEST_CASE("a problem with variants adds the variants' costs, on other terrain ty
   rollout_options ro;
   ro.initial_state = target.initial_state();
   const nearest_neighbor_controller<planar_root> c0(m, target, {});
-  const nn_problem flat{m,
-                        torque_actuator{},
-                        c0,
-                        mass_distance<planar_root>(m, target),
-                        flat_terrain{},
-                        semi_implicit_euler{},
-                        ro};
+  const rollout_problem flat{m,
+                             torque_actuator{},
+                             c0,
+                             mass_distance<planar_root>(m, target),
+                             flat_terrain{},
+                             semi_implicit_euler{},
+                             ro};
   // Variants: the same controller on a 5 degree slope, and on flat ground from a faster start.
   const slope_terrain hill(5.0 * std::numbers::pi / 180.0);
   rollout_options rh = ro;

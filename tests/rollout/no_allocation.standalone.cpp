@@ -246,13 +246,13 @@ TEST_CASE("an evaluation on a reused problem context allocates nothing",
     const auto ctrl = load_nearest_neighbor(m, dir + "normal_walk.controller.json");
     rollout_options ro;
     ro.initial_state = target.initial_state();
-    nn_problem prob{m,
-                    torque_actuator{},
-                    ctrl,
-                    mass_distance<planar_root>(m, target),
-                    flat_terrain{},
-                    semi_implicit_euler{},
-                    ro};
+    rollout_problem prob{m,
+                         torque_actuator{},
+                         ctrl,
+                         mass_distance<planar_root>(m, target),
+                         flat_terrain{},
+                         semi_implicit_euler{},
+                         ro};
     prob.starts = perturbed_starts(m, ro.initial_state);
     require_allocation_free_cost(prob, prob.initial_parameters(), 0.5);
   }

@@ -14,7 +14,6 @@
 #include <numbers>
 #include <string>
 
-#include "gaitsynth/synthesis/sharon2005_scenarios.hpp"
 #include "gaitsynth/actuators/torque.hpp"
 #include "gaitsynth/contact/flat_terrain.hpp"
 #include "gaitsynth/contact/slope_terrain.hpp"
@@ -24,6 +23,7 @@
 #include "gaitsynth/motion/keyframes_json.hpp"
 #include "gaitsynth/objectives/mass_distance.hpp"
 #include "gaitsynth/synthesis/nearest_neighbor_synthesis.hpp"
+#include "gaitsynth/synthesis/sharon2005_scenarios.hpp"
 
 using namespace gaitsynth;
 
@@ -49,8 +49,9 @@ walk_check walk_70s(const planar_model& m, const std::string& controller_file,
   const auto ctrl = load_nearest_neighbor(cm, data(controller_file));
   rollout_options ro;
   ro.initial_state = place ? sharon_scenarios::start_state_for(m, target) : target.initial_state();
-  const nn_problem prob{m,      torque_actuator{},     ctrl, mass_distance<planar_root>(m, target),
-                        ground, semi_implicit_euler{}, ro};
+  const rollout_problem prob{
+      m,      torque_actuator{},     ctrl, mass_distance<planar_root>(m, target),
+      ground, semi_implicit_euler{}, ro};
   return check_walk(prob, params_of(ctrl), 70.0, nullptr, 40, sharon2005_walk_criteria);
 }
 
@@ -83,13 +84,13 @@ TEST_CASE("Fig. 5a/b: the normal walk follows the keyframed style (mass-distance
   const auto ctrl = load_nearest_neighbor(m, data("normal_walk.controller.json"));
   rollout_options ro;
   ro.initial_state = target.initial_state();
-  const nn_problem prob{m,
-                        torque_actuator{},
-                        ctrl,
-                        mass_distance<planar_root>(m, target),
-                        flat_terrain{},
-                        semi_implicit_euler{},
-                        ro};
+  const rollout_problem prob{m,
+                             torque_actuator{},
+                             ctrl,
+                             mass_distance<planar_root>(m, target),
+                             flat_terrain{},
+                             semi_implicit_euler{},
+                             ro};
   trajectory tr;
   const rollout_result r = prob.evaluate(params_of(ctrl), 70.0, &tr, 48);  // 50 frames/s
   REQUIRE(r.reason == stop_reason::horizon);

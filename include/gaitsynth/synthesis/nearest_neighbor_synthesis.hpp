@@ -7,8 +7,11 @@
 /// from the previous one's result (optimizers/continuation.hpp). The cost is any objective; the
 /// paper's is the mass-distance metric (objectives/mass_distance.hpp, eqs. 2-3).
 ///
-///   nn_problem prob{model, torque_actuator{}, controller0, mass_distance(model, target),
-///                   flat_terrain{}, semi_implicit_euler{}, rollout_options_with_initial_state};
+///   rollout_problem prob{model, torque_actuator{}, controller0, mass_distance(model, target),
+///                        flat_terrain{}, semi_implicit_euler{}, rollout_options_with_initial_state};
+///
+/// (The type is an nn_problem. Deduce it through rollout_problem, as above: deduction through an
+/// alias template is C++20, but clang 14 and older do not implement it.)
 ///   nn_synthesis_result r = synthesize_nearest_neighbor(prob, nn_synthesis_options{});
 ///   auto c = prob.controller_with(r.x);           // the optimized controller
 ///   rollout_result check = prob.evaluate(r.x, 70.0);  // the paper's 70 s test
