@@ -186,10 +186,11 @@ inline unsigned resolve_threads(unsigned threads) {
   return threads > 0 ? threads : std::max(1u, std::thread::hardware_concurrency());
 }
 
-/// --seed N: the seed of everything random in the run.
-inline CLI::Option* add_seed(CLI::App& app, unsigned long long& seed) {
-  return app.add_option("--seed", seed, "random seed")
-      ->check(integer_in(0, std::numeric_limits<long long>::max()));
+/// --seed N: the seed of everything random in the run. `max`: the largest seed the example's
+/// generator takes whole (4294967295 for a std::mt19937).
+inline CLI::Option* add_seed(CLI::App& app, unsigned long long& seed,
+                             long long max = std::numeric_limits<long long>::max()) {
+  return app.add_option("--seed", seed, "random seed")->check(integer_in(0, max));
 }
 
 /// The viewer flags (io/viewer_outputs.hpp, docs/viewer.md) as one option group.

@@ -2,11 +2,14 @@
 // seeds and prints the median, range and success rate of the evaluations needed to reach
 // f < 1e-8 (the numbers in docs/optimizers.md come from this program).
 //
-//   optimizer_statistics [--dims 10,40] [--seeds 11] [--cases sphere,ellipsoid,...] [--csv FILE]
-//                        [--threads 1] [--log-dir DIR] [--log-seed 0]
+//   optimizer_statistics [--dims 10,40] [--seeds 11] [--seed 0] [--cases sphere,ellipsoid,...]
+//                        [--csv FILE] [--threads N] [--log-dir DIR] [--log-seed K]
 //
-// With --log-dir, the run of seed --log-seed (default 0) of every case writes its per-iteration
-// CSV log to DIR/<case>_<n>.csv (input of scripts/plot_convergence.py).
+// --seeds N runs seeds --seed, --seed + 1, ..., --seed + N - 1 (default 0..10) of every case and
+// dimension; --threads N evaluates on N threads (default 0: every core; the results do not depend
+// on it). With --log-dir (an existing folder), the run of seed --log-seed (default: the first,
+// --seed) of every case writes its per-iteration CSV log to DIR/<case>_<n>.csv (input of
+// scripts/plot_convergence.py). --help lists every flag with its default and range.
 //
 // Cases: sphere ellipsoid rotated_ellipsoid rosenbrock cigar discus (CMA-ES, x0 ~ U[-3, 3]^n,
 // sigma0 = 2, target 1e-8), rastrigin_ipop rastrigin_bipop (same start, up to 9 restarts, 2e6
@@ -24,10 +27,13 @@
 #include <functional>
 #include <iostream>
 #include <map>
+#include <optional>
 #include <random>
-#include <sstream>
+#include <stdexcept>
 #include <string>
 #include <vector>
+
+#include "command_line.hpp"
 
 using namespace gaitsynth;
 
@@ -35,7 +41,6 @@ namespace {
 
 std::string g_log_dir;   // --log-dir
 std::string g_log_name;  // <case>_<n>.csv of the current run, "" if not logged
-int g_log_seed = 0;      // --log-seed
 
 run_options logging() {
   run_options ro;
@@ -112,63 +117,61 @@ run_outcome run_sds(F f, int n, std::uint64_t seed, double target, std::int64_t 
   return {r.stopped == stop_criterion::target_value, r.evaluations, r.value, r.stopped, 0};
 }
 
-std::vector<std::string> split(const std::string& s) {
-  std::vector<std::string> out;
-  std::stringstream ss(s);
-  std::string item;
-  while (std::getline(ss, item, ',')) out.push_back(item);
-  return out;
-}
-
 }  // namespace
 
-int main(int argc, char** argv) {
+int main(int argc, char** argv) try {
   std::vector<int> dims = {10, 40};
-  int seeds = 11;
-  unsigned threads = 1;
-  std::vector<std::string> cases = {"sphere",
-                                    "ellipsoid",
-                                    "rotated_ellipsoid",
-                                    "rosenbrock",
-                                    "cigar",
-                                    "discus",
-                                    "rastrigin_ipop",
-                                    "rastrigin_bipop",
-                                    "bounded_sphere",
-                                    "bounded_sphere_repair",
-                                    "sds_quadratic",
-                                    "sds_rosenbrock"};
+  long long seeds = 11;
+  unsigned long long first_seed = 0;
+  std::optional<unsigned long long> log_seed;
+  unsigned threads = 0;  // every core
+  const std::vector<std::string> all_cases = {"sphere",
+                                              "ellipsoid",
+                                              "rotated_ellipsoid",
+                                              "rosenbrock",
+                                              "cigar",
+                                              "discus",
+                                              "rastrigin_ipop",
+                                              "rastrigin_bipop",
+                                              "bounded_sphere",
+                                              "bounded_sphere_repair",
+                                              "sds_quadratic",
+                                              "sds_rosenbrock"};
+  std::vector<std::string> cases = all_cases;
   std::string csv;
-  for (int i = 1; i < argc; ++i) {
-    const std::string a = argv[i];
-    auto next = [&]() -> std::string {
-      if (i + 1 >= argc) {
-        std::cerr << "missing value after " << a << "\n";
-        std::exit(2);
-      }
-      return argv[++i];
-    };
-    if (a == "--dims") {
-      dims.clear();
-      for (const auto& d : split(next())) dims.push_back(std::stoi(d));
-    } else if (a == "--seeds") {
-      seeds = std::stoi(next());
-    } else if (a == "--cases") {
-      cases = split(next());
-    } else if (a == "--csv") {
-      csv = next();
-    } else if (a == "--log-dir") {
-      g_log_dir = next();
-    } else if (a == "--log-seed") {
-      g_log_seed = std::stoi(next());
-    } else if (a == "--threads") {
-      threads = static_cast<unsigned>(std::stoi(next()));
-    } else {
-      std::cerr << "usage: optimizer_statistics [--dims 10,40] [--seeds 11] [--cases a,b] "
-                   "[--csv FILE] [--threads T] [--log-dir DIR] [--log-seed S]\n";
-      return 2;
-    }
-  }
+  CLI::App app{
+      "Statistics of the optimizers on the standard test functions: evaluations to reach the "
+      "target over several seeds per case and dimension.",
+      "optimizer_statistics"};
+  app.option_defaults()->always_capture_default();
+  app.add_option("--dims", dims, "dimensions, comma-separated (e.g. 10,40)")
+      ->delimiter(',')
+      ->allow_extra_args(false)
+      ->check(example_cli::integer_in(1, 10000));
+  app.add_option("--seeds", seeds, "number of seeds per case and dimension")
+      ->check(example_cli::integer_in(0, 1000000));
+  example_cli::add_seed(app, first_seed)
+      ->description("first seed (runs --seed .. --seed + --seeds - 1)");
+  app.add_option("--cases", cases, "cases, comma-separated")
+      ->delimiter(',')
+      ->allow_extra_args(false)
+      ->check(CLI::IsMember(all_cases));
+  app.add_option("--csv", csv, "write every run as a CSV row to this file");
+  example_cli::add_threads(app, threads);
+  CLI::Option* log_dir =
+      app.add_option("--log-dir", g_log_dir, "write per-iteration CSV logs into this folder")
+          ->check(CLI::ExistingDirectory);
+  app.add_option("--log-seed", log_seed, "seed whose runs are logged (default: the first, --seed)")
+      ->check(example_cli::integer_in(0, std::numeric_limits<long long>::max()))
+      ->needs(log_dir);
+  example_cli::parse(app, argc, argv);
+  threads = example_cli::resolve_threads(threads);
+  const unsigned long long logged = log_seed.value_or(first_seed);
+  if (!g_log_dir.empty() &&
+      (logged < first_seed || logged - first_seed >= static_cast<unsigned long long>(seeds)))
+    throw std::invalid_argument(
+        "--log-seed " + std::to_string(logged) + " is not one of the seeds run (--seed " +
+        std::to_string(first_seed) + " --seeds " + std::to_string(seeds) + ")");
 
   std::ofstream out;
   if (!csv.empty()) {
@@ -180,10 +183,11 @@ int main(int argc, char** argv) {
     for (int n : dims) {
       const auto t0 = std::chrono::steady_clock::now();
       std::vector<run_outcome> rs;
-      for (int s = 0; s < seeds; ++s) {
-        const auto seed = static_cast<std::uint64_t>(s);
+      for (long long s = 0; s < seeds; ++s) {
+        const auto seed =
+            static_cast<std::uint64_t>(first_seed + static_cast<unsigned long long>(s));
         g_log_name =
-            (!g_log_dir.empty() && s == g_log_seed) ? c + "_" + std::to_string(n) + ".csv" : "";
+            (!g_log_dir.empty() && seed == logged) ? c + "_" + std::to_string(n) + ".csv" : "";
         run_outcome r;
         if (c == "sphere")
           r = run_cmaes(test_functions::sphere, n, seed, threads);
@@ -216,10 +220,8 @@ int main(int argc, char** argv) {
               n, seed, 1e-8, 1'000'000);
         else if (c == "sds_rosenbrock")
           r = run_sds(test_functions::rosenbrock, n, seed, 1e-6, 2'000'000);
-        else {
-          std::cerr << "unknown case " << c << "\n";
-          return 2;
-        }
+        else
+          throw std::invalid_argument("--cases: unknown case '" + c + "'");
         rs.push_back(r);
         if (out.is_open())
           out << c << ',' << n << ',' << seed << ',' << r.success << ',' << r.evaluations << ','
@@ -246,10 +248,13 @@ int main(int argc, char** argv) {
         std::snprintf(range, sizeof range, "%lld-%lld", static_cast<long long>(ev.front()),
                       static_cast<long long>(ev.back()));
       }
-      std::printf("%-24s %5d %5d/%-2d %10s %22s %5.1fs\n", c.c_str(), n, ok, seeds, median, range,
+      std::printf("%-24s %5d %5d/%-2lld %10s %22s %5.1fs\n", c.c_str(), n, ok, seeds, median, range,
                   secs);
       std::fflush(stdout);
     }
   }
   return 0;
+} catch (const std::exception& e) {
+  std::cerr << "optimizer_statistics: " << e.what() << "\n";
+  return 1;
 }

@@ -266,7 +266,7 @@ auto make_problem(const gaitsynth::planar_model& m,
   return prob;
 }
 
-/// The viewer flags (--html, --filmstrip, ...; viewer_flags.hpp) for the check rollout; the
+/// The viewer flags (--html, --filmstrip, ...; command_line.hpp) for the check rollout; the
 /// filmstrip is a strobe picture of the first 3 s (frames every 0.1 s, as in Figures 5b-8).
 template <class Model>
 void write_views(const Model& m, const gaitsynth::trajectory& traj, const cli& c,

@@ -6,11 +6,16 @@
 //
 // One SVG per keyframe file: the listed keyframes side by side (the step that the mirror image
 // completes), with the ground under the stance foot.
+//
+//   sharon2005_keyframes [--out DIR]     (the folder of the SVGs, created; default out)
+//
+// Nothing is random: there is no --seed. --help lists the flags.
 #include <filesystem>
 #include <iostream>
 #include <string>
 #include <vector>
 
+#include "command_line.hpp"
 #include "gaitsynth/contact/slope_terrain.hpp"
 #include "gaitsynth/models/sharon2005.hpp"
 #include "gaitsynth/motion/keyframes_json.hpp"
@@ -72,17 +77,16 @@ void draw(const gaitsynth::model<Root>& m, const std::string& file, const std::s
 }  // namespace
 
 int main(int argc, char** argv) try {
-  std::filesystem::path out = "out";
-  for (int i = 1; i < argc; ++i) {
-    const std::string a = argv[i];
-    if (a == "--out" && i + 1 < argc)
-      out = argv[++i];
-    else {
-      std::cerr << "usage: " << argv[0] << " [--out DIR]\n";
-      return a == "--help" ? 0 : 1;
-    }
-  }
-  std::filesystem::create_directories(out);
+  std::string out = "out";
+  CLI::App app{
+      "Draws the hand-authored keyframes of Sharon & van de Panne 2005 (Figures 5a, 5c, 6a, 6c, "
+      "7a) as SVG strips.",
+      "sharon2005_keyframes"};
+  app.option_defaults()->always_capture_default();
+  app.add_option("--out", out, "folder of the SVGs (created)");
+  example_cli::parse(app, argc, argv);
+  const std::filesystem::path dir = out;
+  std::filesystem::create_directories(dir);
   using namespace gaitsynth;
   const planar_model h7 = sharon2005_human7();
   const planar_model h16 = sharon2005_human16();
@@ -110,9 +114,9 @@ int main(int argc, char** argv) try {
       continue;
     }
     if (it.human16)
-      draw(h16, it.file, (out / it.svg).string(), it.title, it.slope);
+      draw(h16, it.file, (dir / it.svg).string(), it.title, it.slope);
     else
-      draw(h7, it.file, (out / it.svg).string(), it.title, it.slope);
+      draw(h7, it.file, (dir / it.svg).string(), it.title, it.slope);
   }
   return 0;
 } catch (const std::exception& e) {

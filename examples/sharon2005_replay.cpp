@@ -4,13 +4,20 @@
 // filmstrip, the CSV trajectory, and a one-line JSON summary on stdout.
 //
 //   ./sharon2005_replay --result NAME [--seconds S] [--controller FILE] [--out DIR]
-//                       [--html FILE] [--filmstrip FILE] [--filmstrip-seconds S] [--filmstrip-from
-//                       S] ...
+//                       [--filmstrip-seconds S] [--filmstrip-from S]
+//                       [--html FILE] [--filmstrip FILE] [--gait-svg FILE] ...
 //
 // NAME: normal_walk (Fig. 5a/b), human16 (5c/d), high_knee (6a/b), backswing (6c/d), uphill (7),
 // torso_28kg (8a), shin_0.25_thigh_0.6 (8b), shin_0.8 (8c), bumpy (8d). The Figure 8 variants run
 // the unmodified normal-walk controller on the changed body or terrain. The docs' filmstrips
 // (docs/reproductions/sharon2005.md) are made with this program.
+//
+// --seconds: length of the rollout (default 70, in [0.01, 3600]); --filmstrip-seconds: length of
+// the filmstrip (default 3, in [0.01, 3600]); --filmstrip-from: its start (default 0, in [0, 3600],
+// before --seconds). The viewer flags (--html FILE, --filmstrip FILE, --filmstrip-front FILE,
+// --gait-svg FILE, --bvh FILE, --csv FILE, --mjcf-replay FILE; examples/command_line.hpp) show
+// the rollout; the CSV trajectory is always written to DIR/sharon2005_replay_NAME.csv (default
+// out/). Nothing is random: there is no --seed. --help lists every flag with its default.
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
@@ -20,6 +27,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "command_line.hpp"
 #include "gaitsynth/actuators/torque.hpp"
 #include "gaitsynth/contact/flat_terrain.hpp"
 #include "gaitsynth/contact/slope_terrain.hpp"
@@ -31,7 +39,6 @@
 #include "gaitsynth/objectives/mass_distance.hpp"
 #include "gaitsynth/synthesis/nearest_neighbor_synthesis.hpp"
 #include "gaitsynth/synthesis/sharon2005_scenarios.hpp"
-#include "viewer_flags.hpp"
 
 namespace {
 
@@ -51,59 +58,39 @@ const char* kResults =
     "normal_walk, human16, high_knee, backswing, uphill, torso_28kg, shin_0.25_thigh_0.6, "
     "shin_0.8, bumpy";
 
-void usage(const char* name) {
-  std::cerr << "usage: " << name << " --result NAME [options]\n"
-            << "  --result NAME          one of: " << kResults << "\n"
-            << "  --seconds S            length of the rollout (default 70)\n"
-            << "  --controller FILE      controller JSON (default: the result's file in "
-               "data/sharon2005)\n"
-            << "  --out DIR              folder of the CSV trajectory (default out/)\n"
-            << "  --filmstrip-seconds S  length of the filmstrip (default 3)\n"
-            << "  --filmstrip-from S     its start time (default 0)\n"
-            << viewer_flags::help();
-}
-
 options parse(int argc, char** argv) {
   options o;
-  o.viz = viewer_flags::extract(argc, argv);
-  for (int i = 1; i < argc; ++i) {
-    const std::string a = argv[i];
-    auto value = [&]() -> std::string {
-      if (i + 1 >= argc) throw std::invalid_argument(a + " needs a value");
-      return argv[++i];
-    };
-    if (a == "--result")
-      o.result = value();
-    else if (a == "--seconds")
-      o.seconds = std::stod(value());
-    else if (a == "--controller")
-      o.controller = value();
-    else if (a == "--out")
-      o.out_dir = value();
-    else if (a == "--filmstrip-seconds")
-      o.filmstrip_seconds = std::stod(value());
-    else if (a == "--filmstrip-from")
-      o.filmstrip_from = std::stod(value());
-    else if (a == "--help" || a == "-h") {
-      usage(argv[0]);
-      std::exit(0);
-    } else {
-      usage(argv[0]);
-      throw std::invalid_argument("unknown option '" + a + "'");
-    }
-  }
-  if (o.result.empty()) {
-    usage(argv[0]);
-    throw std::invalid_argument("--result is required");
-  }
-  if (!(o.seconds > 0.0 && o.seconds <= 3600.0))
-    throw std::invalid_argument("--seconds must be in (0, 3600], got " + std::to_string(o.seconds));
-  if (!(o.filmstrip_from >= 0.0 && o.filmstrip_from < o.seconds))
-    throw std::invalid_argument("--filmstrip-from must be in [0, --seconds), got " +
-                                std::to_string(o.filmstrip_from));
-  if (!(o.filmstrip_seconds > 0.0))
-    throw std::invalid_argument("--filmstrip-seconds must be > 0, got " +
-                                std::to_string(o.filmstrip_seconds));
+  std::string out = o.out_dir.string();
+  CLI::App app{
+      "Replays a saved Sharon & van de Panne 2005 controller in one of the paper's situations "
+      "and writes the CSV trajectory, the viewer files asked for and a JSON summary.",
+      "sharon2005_replay"};
+  app.option_defaults()->always_capture_default();
+  app.add_option("--result", o.result, "the result to replay (required)")
+      ->check(CLI::IsMember({"normal_walk", "human16", "high_knee", "backswing", "uphill",
+                             "torso_28kg", "shin_0.25_thigh_0.6", "shin_0.8", "bumpy"}));
+  app.add_option("--seconds", o.seconds, "length of the rollout, s")
+      ->check(example_cli::in_range(0.01, 3600.0));
+  app.add_option("--controller", o.controller,
+                 "controller JSON (default: the result's file in data/sharon2005)")
+      ->check(CLI::ExistingFile);
+  app.add_option("--out", out, "folder of the CSV trajectory (created)");
+  app.add_option("--filmstrip-seconds", o.filmstrip_seconds, "length of the filmstrip, s")
+      ->check(example_cli::in_range(0.01, 3600.0));
+  app.add_option("--filmstrip-from", o.filmstrip_from, "start time of the filmstrip, s")
+      ->check(example_cli::in_range(0.0, 3600.0));
+  example_cli::add_viewer_flags(app, o.viz, "the rollout");
+  // Checked once the command line is otherwise valid, so an unknown flag is named first.
+  app.callback([&] {
+    if (o.result.empty()) throw CLI::RequiredError("--result");
+  });
+  example_cli::parse(app, argc, argv);
+  o.out_dir = out;
+  if (!(o.filmstrip_from < o.seconds))
+    throw std::invalid_argument("--filmstrip-from " +
+                                app.get_option("--filmstrip-from")->as<std::string>() +
+                                " must be before the end of the rollout, --seconds " +
+                                app.get_option("--seconds")->as<std::string>());
   return o;
 }
 
@@ -124,7 +111,7 @@ int run(const options& o, const std::string& title, const planar_model& m,
   // As tests/sharon2005/claims.cpp: lowest foot point on z = 0 (every terrain here is level at the
   // start).
   ro.initial_state = place ? sharon_scenarios::start_state_for(m, target) : target.initial_state();
-  const nn_problem prob{m,      torque_actuator{},     ctrl, mass_distance<planar_root>(m, target),
+  const rollout_problem prob{m,      torque_actuator{},     ctrl, mass_distance<planar_root>(m, target),
                         ground, semi_implicit_euler{}, ro};
   const auto p = ctrl.parameters();
   const Eigen::VectorXd x =

@@ -5,17 +5,24 @@
 // placed so the lowest foot point touches the ground).
 //
 //   ./sharon2005_robustness [--controller FILE] [--out DIR] [--seconds S]
+//                           [--html FILE] [--filmstrip FILE] [--gait-svg FILE] ...
 //
 // Default controller: data/sharon2005/normal_walk.controller.json (written by
-// sharon2005_normal_walk). Writes DIR/sharon2005_robustness_<variant>.csv (70 s, 60 frames/s) and
-// .svg (strobe picture of the first 3 s) and prints one JSON line per variant, then a summary
-// line, on stdout.
+// sharon2005_normal_walk). Writes DIR/sharon2005_robustness_<variant>.csv (--seconds, default 70,
+// in [0.01, 3600]; 60 frames/s) and .svg (strobe picture of the first 3 s) into DIR (default out,
+// created) and prints one JSON line per variant, then a summary line, on stdout. The viewer flags
+// (--html FILE, --filmstrip FILE, --filmstrip-front FILE, --gait-svg FILE, --bvh FILE, --csv FILE,
+// --mjcf-replay FILE; examples/command_line.hpp) are each written once per variant, the variant's
+// name inserted before the file's extension (--html out/r.html gives out/r_torso_28kg.html, ...).
+// Nothing is random: there is no --seed. --help lists every flag with its default.
 #include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <iostream>
 #include <nlohmann/json.hpp>
 #include <string>
 
+#include "command_line.hpp"
 #include "gaitsynth/actuators/torque.hpp"
 #include "gaitsynth/contact/flat_terrain.hpp"
 #include "gaitsynth/controllers/nearest_neighbor_json.hpp"
@@ -24,34 +31,32 @@
 #include "gaitsynth/motion/keyframes_json.hpp"
 #include "gaitsynth/objectives/mass_distance.hpp"
 #include "gaitsynth/synthesis/nearest_neighbor_synthesis.hpp"
-#include "gaitsynth/viz/filmstrip_svg.hpp"
 #include "gaitsynth/synthesis/sharon2005_scenarios.hpp"
-#include "viewer_flags.hpp"
+#include "gaitsynth/viz/filmstrip_svg.hpp"
 
 int main(int argc, char** argv) try {
   using namespace gaitsynth;
   std::string data = std::string(GAITSYNTH_SOURCE_DIR) + "/data/sharon2005/";
   std::string ctrl_path = data + "normal_walk.controller.json";
-  std::filesystem::path out = "out";
+  std::string out_arg = "out";
   double seconds = 70.0;
-  // Viewer flags (viewer_flags.hpp): each is written once per variant, the variant's name inserted
-  // before the file's extension (--html out/r.html gives out/r_torso_28kg.html, ...).
-  const viz_outputs views = viewer_flags::extract(argc, argv);
-  for (int i = 1; i < argc; ++i) {
-    const std::string a = argv[i];
-    if (a == "--controller" && i + 1 < argc)
-      ctrl_path = argv[++i];
-    else if (a == "--out" && i + 1 < argc)
-      out = argv[++i];
-    else if (a == "--seconds" && i + 1 < argc)
-      seconds = std::stod(argv[++i]);
-    else {
-      std::cerr << "usage: " << argv[0] << " [--controller FILE] [--out DIR] [--seconds S]\n"
-                << "viewer outputs, one per variant (NAME inserted before the extension):\n"
-                << viewer_flags::help();
-      return a == "--help" ? 0 : 1;
-    }
-  }
+  // Viewer flags: each is written once per variant, the variant's name inserted before the file's
+  // extension (--html out/r.html gives out/r_torso_28kg.html, ...).
+  viz_outputs views;
+  CLI::App app{
+      "Sharon & van de Panne 2005, Figure 8: the unmodified normal-walk controller on a changed "
+      "body or bumpy terrain, simulated without re-optimization.",
+      "sharon2005_robustness"};
+  app.option_defaults()->always_capture_default();
+  app.add_option("--controller", ctrl_path, "controller JSON")->check(CLI::ExistingFile);
+  app.add_option("--out", out_arg, "folder of the CSV trajectories and SVG pictures (created)");
+  app.add_option("--seconds", seconds, "length of each rollout, s")
+      ->check(example_cli::in_range(0.01, 3600.0));
+  example_cli::add_viewer_flags(app, views,
+                                "each variant (one file per variant, its name before the "
+                                "extension)");
+  example_cli::parse(app, argc, argv);
+  const std::filesystem::path out = out_arg;
   std::filesystem::create_directories(out);
   const planar_model nominal = sharon2005_human7();
   const auto target = load_keyframes(nominal, data + "normal_walk.keyframes.json");
@@ -67,7 +72,7 @@ int main(int argc, char** argv) try {
                     const auto& ground) {
     rollout_options ro;
     ro.initial_state = sharon_scenarios::start_state_for(m, target);
-    const nn_problem prob{
+    const rollout_problem prob{
         m,      torque_actuator{},     ctrl, mass_distance<planar_root>(m, target),
         ground, semi_implicit_euler{}, ro};
     trajectory traj;

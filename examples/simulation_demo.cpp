@@ -8,16 +8,20 @@
 //   3. The 7-link planar human of Sharon & van de Panne 2005 stands on a 5 degree uphill slope,
 //      its ankles dorsiflexed by the slope angle so that its feet lie flat with the body upright.
 //
-// Usage: simulation_demo [--html FILE] [--filmstrip FILE] [--gait-svg FILE] [--bvh FILE]
-//                        [--csv FILE] [--mjcf-replay FILE]
-// The viewer flags (viewer_flags.hpp, docs/viewer.md) write the first rollout, the pushed humanoid.
+// Nothing is random: every run prints the same.
+//
+// Usage: simulation_demo [--html FILE] [--filmstrip FILE] [--filmstrip-front FILE]
+//                        [--gait-svg FILE] [--bvh FILE] [--csv FILE] [--mjcf-replay FILE]
+// The viewer flags (examples/command_line.hpp, docs/viewer.md) write the first rollout, the
+// pushed humanoid. --help lists them.
 #include <chrono>
 #include <cstdio>
 #include <cstring>
+#include <exception>
 #include <string>
 
+#include "command_line.hpp"
 #include "gaitsynth/gaitsynth.hpp"
-#include "viewer_flags.hpp"
 
 using namespace gaitsynth;
 
@@ -58,19 +62,15 @@ void print_result(const rollout_result& r, double wall) {
 
 }  // namespace
 
-int main(int argc, char** argv) {
+int main(int argc, char** argv) try {
   viz_outputs views;
-  try {
-    views = viewer_flags::extract(argc, argv);
-  } catch (const std::exception& e) {
-    std::fprintf(stderr, "error: %s\n", e.what());
-    return 2;
-  }
-  if (argc > 1) {
-    std::fprintf(stderr, "unknown option '%s'\nusage: %s [options]\n%s", argv[1], argv[0],
-                 viewer_flags::help());
-    return 2;
-  }
+  CLI::App app{
+      "A short simulation demo: a pushed standing humanoid, the same without actuation, and the "
+      "7-link human standing on a slope.",
+      "simulation_demo"};
+  app.option_defaults()->always_capture_default();
+  example_cli::add_viewer_flags(app, views, "the first rollout, the pushed humanoid");
+  example_cli::parse(app, argc, argv);
 
   // ---- 1. standing humanoid, pushed -------------------------------------------------------------
   const floating_model humanoid = wang2009_humanoid();
@@ -144,4 +144,7 @@ int main(int argc, char** argv) {
   print_frames(tr, 0.5);
   print_result(r, wall);
   return 0;
+} catch (const std::exception& e) {
+  std::fprintf(stderr, "simulation_demo: %s\n", e.what());
+  return 1;
 }

@@ -3,19 +3,24 @@
 // (rollout/push_test.hpp). Without arguments it tests the SIMBICON baseline
 // (controllers/fsm/simbicon.hpp) and prints its column next to the paper's.
 //
-//   wang2009_push_test [--resolution N] [--max-force N] [--from-yin]
+//   wang2009_push_test [--resolution N] [--max-force N] [--from-yin] [--paper COLUMN]
 //   wang2009_push_test --controller FILE [--paper COLUMN] [--resolution N] [--max-force N]
 //
-// --from-yin tests Yin et al.'s walk as published (simbicon_yin2007_walk_parameters) instead of
-// the library's adjusted one. --controller tests an optimized Wang 2009 walker saved by
-// wang2009_walk, with the settings of its optimization (synthesis/wang2009_simulation.hpp), next
-// to Table 1's column COLUMN (short, overweight, tall, short2, stocky; default: SIMBICON's).
+// --resolution: step of the force components tried, N (default 5, in [0.01, 10000]);
+// --max-force: the largest tried, N (default 500, in [0, 10000]). --from-yin tests Yin et al.'s
+// walk as published (simbicon_yin2007_walk_parameters) instead of the library's adjusted one.
+// --controller tests an optimized Wang 2009 walker saved by wang2009_walk, with the settings of
+// its optimization (synthesis/wang2009_simulation.hpp), next to Table 1's column COLUMN (short,
+// overweight, tall, short2, stocky, simbicon; default: SIMBICON's). Nothing is random: there is
+// no --seed. --help lists every flag with its default.
 #include <array>
 #include <cstdio>
 #include <cstdlib>
 #include <iostream>
+#include <stdexcept>
 #include <string>
 
+#include "command_line.hpp"
 #include "gaitsynth/controllers/fsm/simbicon.hpp"
 #include "gaitsynth/controllers/fsm/wang2009_json.hpp"
 #include "gaitsynth/gaitsynth.hpp"
@@ -56,28 +61,26 @@ void print_table(const std::string& column, Test&& test) {
 int main(int argc, char** argv) try {
   push_protocol proto;
   bool from_yin = false;
-  std::string controller, column;
-  for (int i = 1; i < argc; ++i) {
-    const std::string a = argv[i];
-    if (a == "--from-yin")
-      from_yin = true;
-    else if (a == "--resolution" && i + 1 < argc)
-      proto.resolution = std::stod(argv[++i]);
-    else if (a == "--max-force" && i + 1 < argc)
-      proto.max_force = std::stod(argv[++i]);
-    else if (a == "--controller" && i + 1 < argc)
-      controller = argv[++i];
-    else if (a == "--paper" && i + 1 < argc)
-      column = argv[++i];
-    else {
-      std::cerr << "usage: " << argv[0]
-                << " [--resolution N] [--max-force N] [--from-yin]\n"
-                   "       "
-                << argv[0]
-                << " --controller FILE [--paper COLUMN] [--resolution N] [--max-force N]\n";
-      return 2;
-    }
-  }
+  std::string controller, column = "simbicon";
+  CLI::App app{
+      "Table 1 of Wang, Fleet & Hertzmann 2009: the largest push a walker survives from each of 8 "
+      "directions (the SIMBICON baseline, or a saved controller).",
+      "wang2009_push_test"};
+  app.option_defaults()->always_capture_default();
+  app.add_option("--resolution", proto.resolution, "step of the force components tried, N")
+      ->check(example_cli::in_range(0.01, 10000.0));
+  app.add_option("--max-force", proto.max_force, "largest force component tried, N")
+      ->check(example_cli::in_range(0.0, 10000.0));
+  app.add_flag("--from-yin", from_yin,
+               "test Yin et al.'s walk as published instead of the library's adjusted one");
+  app.add_option("--controller", controller, "test this saved Wang 2009 controller (JSON)")
+      ->check(CLI::ExistingFile);
+  app.add_option("--paper", column, "Table 1's column printed next to it")
+      ->check(CLI::IsMember({"short", "overweight", "tall", "short2", "stocky", "simbicon"}));
+  example_cli::parse(app, argc, argv);
+  if (from_yin && !controller.empty())
+    throw std::invalid_argument("--from-yin cannot be given with --controller " + controller +
+                                " (it tests the SIMBICON baseline)");
   if (!controller.empty()) {
     const std::string shape = wang2009_saved_shape(controller);
     const floating_model m = wang2009_humanoid(wang2009_preset(shape));
@@ -86,7 +89,7 @@ int main(int argc, char** argv) try {
     c.bind(p);
     const rollout_options opt = wang2009_rollout_options(m, wang2009_fail_height(shape));
     const int torso = m.body_index("torso");
-    print_table(column.empty() ? "simbicon" : column, [&](const vec3& d) {
+    print_table(column, [&](const vec3& d) {
       return max_push_force(m, mixed_pd_actuator{}, c, flat_terrain{}, semi_implicit_euler{},
                             std::span<const double>(p), opt, torso, d, proto);
     });
@@ -102,7 +105,7 @@ int main(int argc, char** argv) try {
   opt.fall_height = 0.7;  // E_fail's height
   opt.initial_state = simbicon_start_state(m);
   const int torso = m.body_index("torso");
-  print_table(column.empty() ? "simbicon" : column, [&](const vec3& d) {
+  print_table(column, [&](const vec3& d) {
     return max_push_force(m, mixed_pd_actuator{}, c, flat_terrain{}, semi_implicit_euler{},
                           std::span<const double>(p), opt, torso, d, proto);
   });

@@ -5,36 +5,42 @@
 // Prints every improvement; the last one is what the library uses.
 //
 //   wang2009_simbicon_tune [--seed K] [--iterations N] [--from-yin]
+//
+// --seed: the search's std::mt19937 seed (default 1, in [0, 4294967295]); --iterations: search
+// steps (default 400, in [0, 1000000]); --from-yin starts from Yin et al.'s walk as published
+// instead of simbicon_walk_parameters(). --help lists every flag with its default.
+#include <algorithm>
+#include <array>
 #include <cstdio>
 #include <cstdlib>
+#include <exception>
 #include <random>
 #include <string>
 #include <utility>
 #include <vector>
 
+#include "command_line.hpp"
 #include "gaitsynth/controllers/fsm/simbicon.hpp"
 #include "gaitsynth/gaitsynth.hpp"
 #include "gaitsynth/rollout/push_test.hpp"
 
 using namespace gaitsynth;
 
-int main(int argc, char** argv) {
-  unsigned seed = 1;
+int main(int argc, char** argv) try {
+  unsigned long long seed = 1;
   int iterations = 400;
   bool from_yin = false;
-  for (int i = 1; i < argc; ++i) {
-    const std::string a = argv[i];
-    if (a == "--seed" && i + 1 < argc)
-      seed = static_cast<unsigned>(std::atoi(argv[++i]));
-    else if (a == "--iterations" && i + 1 < argc)
-      iterations = std::atoi(argv[++i]);
-    else if (a == "--from-yin")
-      from_yin = true;
-    else {
-      std::fprintf(stderr, "usage: %s [--seed K] [--iterations N] [--from-yin]\n", argv[0]);
-      return 2;
-    }
-  }
+  CLI::App app{
+      "How simbicon_walk_parameters() was set: a seeded (1+1) random search from Yin et al. "
+      "2007's walk that maximizes the Table 1 push forces of Wang et al. 2009.",
+      "wang2009_simbicon_tune"};
+  app.option_defaults()->always_capture_default();
+  example_cli::add_seed(app, seed, 4294967295LL);  // std::mt19937 takes 32 bits
+  app.add_option("--iterations", iterations, "search steps")
+      ->check(example_cli::integer_in(0, 1000000));
+  app.add_flag("--from-yin", from_yin,
+               "start from Yin et al.'s walk as published instead of simbicon_walk_parameters()");
+  example_cli::parse(app, argc, argv);
   const auto m = wang2009_humanoid();
   const auto [kp, kd] = simbicon_walk_gains(m);
   const simbicon_controller c(m, kp, kd);
@@ -66,7 +72,7 @@ int main(int argc, char** argv) {
       {0, 0.025},  {2, 0.05},  {3, 0.1},   {4, 0.05},  {5, 0.025},  {6, 0.05}, {7, 0.1},
       {8, 0.05},   {9, 0.025}, {10, 0.05}, {12, 0.25}, {13, 0.05},  {14, 0.1}, {15, 0.05},
       {16, 0.025}, {17, 0.05}, {18, 0.05}, {19, 0.05}, {20, 0.025}, {21, 0.05}};
-  std::mt19937 rng(seed);
+  std::mt19937 rng(static_cast<std::mt19937::result_type>(seed));
   std::normal_distribution<double> g;
   for (int it = 0; it < iterations; ++it) {
     std::vector<double> p = best;
@@ -84,4 +90,7 @@ int main(int argc, char** argv) {
     std::fflush(stdout);
   }
   return 0;
+} catch (const std::exception& e) {
+  std::fprintf(stderr, "wang2009_simbicon_tune: %s\n", e.what());
+  return 1;
 }
