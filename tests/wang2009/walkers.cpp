@@ -86,9 +86,15 @@ void check_walker_on(const reported& w, const Terrain& ground) {
   INFO(w.file << ": " << to_string(r.reason) << " after " << r.time << " s");
   REQUIRE(walked(r));
   const wang2009_breakdown rep = wang2009_report(obj, *states.objective, r, opt);
-  CHECK(rep.average_speed == Approx(w.speed).margin(0.005));
-  CHECK(rep.step_length == Approx(w.step_length).margin(0.005));
-  for (int k = 0; k < 3; ++k) CHECK(rep.power_ratio[k] == Approx(w.ratio[k]).margin(0.005));
+  // The page reports what GCC 12 -O3 (CI's build) measures. A 100 s walk is chaotic: clang 14
+  // and GCC with FMA contraction (-ffp-contract=fast -march=x86-64-v3) retrace it with averages
+  // up to 3.4 % (speed, step) and 0.011 (a ratio component) away from those
+  // (scripts/claims_other_builds.sh, 2026-12-03), so the reported values are checked to 5 % and
+  // 0.02, which every build meets; the claims (100 s, the perturbed starts, the human ratio
+  // within 0.05, push-off) are checked as stated.
+  CHECK(rep.average_speed == Approx(w.speed).epsilon(0.05));
+  CHECK(rep.step_length == Approx(w.step_length).epsilon(0.05));
+  for (int k = 0; k < 3; ++k) CHECK(rep.power_ratio[k] == Approx(w.ratio[k]).margin(0.02));
   constexpr std::array<double, 3> r_walk{0.43, 0.04, 0.53};  // eq. 15, Novacheck 1998
   if (w.human_ratio)
     for (int k = 0; k < 3; ++k) CHECK(std::abs(rep.power_ratio[k] - r_walk[k]) <= 0.05);
@@ -115,7 +121,14 @@ void check_walker_on(const reported& w, const Terrain& ground) {
                                      << " s");
     walking += walked(rk);
   }
-  CHECK(walking == w.perturbed_walked);
+  // A walker is robust when at least 8 of the 10 perturbed starts walk (the page gives the count
+  // of CI's build); one below 8 is not claimed robust, only kept from getting worse, with one
+  // start of slack for other builds' rounding.
+  INFO(walking << " of 10 perturbed starts walk; the page reports " << w.perturbed_walked);
+  if (w.perturbed_walked >= 8)
+    CHECK(walking >= 8);
+  else
+    CHECK(walking >= w.perturbed_walked - 1);
 }
 
 /// Checks walker w on the ground it was optimized on: its info's slope (uphill along +x).
