@@ -24,6 +24,8 @@
 /// Angles are radians, written as the shortest decimals that read back exactly, so a saved
 /// controller replays bit for bit. Errors are std::invalid_argument messages naming the source,
 /// the location and the value.
+#include <algorithm>
+#include <climits>
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
@@ -33,6 +35,7 @@
 #include <vector>
 
 #include "gaitsynth/controllers/nearest_neighbor.hpp"
+#include "gaitsynth/detail/json_text.hpp"
 #include "gaitsynth/motion/keyframes_json.hpp"
 
 namespace gaitsynth {
@@ -112,51 +115,78 @@ template <root_joint Root>
 nearest_neighbor_controller<Root> nearest_neighbor_from_json(
     const model<Root>& m, const nlohmann::json& j, const std::string& source = "<controller>") {
   const detail::keyframe_reader r(source);
-  if (!j.is_object()) r.fail("", "expected a JSON object");
+  if (!j.is_object()) r.fail("", "expected a JSON object, got " + std::string(j.type_name()));
   if (!j.contains("format") || j["format"] != "gaitsynth.nearest_neighbor/1")
-    r.fail("format", "expected \"gaitsynth.nearest_neighbor/1\"");
+    r.fail("format", "expected \"gaitsynth.nearest_neighbor/1\", got " +
+                         (j.contains("format") ? detail::json_short(j["format"]) : "nothing"));
   if (j.contains("model") && j["model"] != m.name)
     r.fail("model",
            "file is for model " + j["model"].dump() + ", but the model is '" + m.name + "'");
-  if (!j.contains("options") || !j["options"].is_object()) r.fail("options", "missing object");
+  if (!j.contains("options")) r.fail("options", "missing object");
+  if (!j["options"].is_object())
+    r.fail("options", "expected an object, got " + std::string(j["options"].type_name()));
   const auto& jo = j["options"];
+  // The options nearest_neighbor_to_json writes: another name is a typo, not a default to use.
+  // clang-format off
+  static const std::vector<std::string> known_options = {
+      "num_nodes", "symmetric", "input", "input_weights", "free_dofs", "max_advance",
+      "first_node_time", "output", "kp", "kd", "torque_limit", "torso_servo", "torso_body",
+      "left_hip", "right_hip", "torso_kp", "torso_kd", "left_foot", "right_foot",
+      "stance_from_contacts", "compensate_swing_hip", "period"};
+  // clang-format on
+  for (auto it = jo.begin(); it != jo.end(); ++it)
+    if (std::find(known_options.begin(), known_options.end(), it.key()) == known_options.end())
+      r.fail("options." + it.key(), "unknown option '" + it.key() +
+                                        "' (known: " + detail::join_names(known_options) + ")");
   nearest_neighbor_options o;
   auto num = [&](const char* key, double& x) {
     if (jo.contains(key)) x = r.number(jo[key], std::string("options.") + key);
   };
   auto integer = [&](const char* key, int& x) {
     if (!jo.contains(key)) return;
-    if (!jo[key].is_number_integer())
-      r.fail(std::string("options.") + key, "expected an integer, got " + jo[key].dump());
-    x = jo[key].get<int>();
+    const auto& v = jo[key];
+    if (!v.is_number_integer())
+      r.fail(std::string("options.") + key, "expected an integer, got " + detail::json_short(v));
+    if (v.is_number_unsigned()
+            ? v.get<std::uint64_t>() > static_cast<std::uint64_t>(INT_MAX)
+            : (v.get<std::int64_t>() < INT_MIN || v.get<std::int64_t>() > INT_MAX))
+      r.fail(std::string("options.") + key, v.dump() + " is out of range for an int");
+    x = v.get<int>();
   };
   auto boolean = [&](const char* key, bool& x) {
     if (!jo.contains(key)) return;
     if (!jo[key].is_boolean())
-      r.fail(std::string("options.") + key, "expected true/false, got " + jo[key].dump());
+      r.fail(std::string("options.") + key,
+             "expected true/false, got " + detail::json_short(jo[key]));
     x = jo[key].get<bool>();
   };
   auto string = [&](const char* key, std::string& x) {
     if (!jo.contains(key)) return;
     if (!jo[key].is_string())
-      r.fail(std::string("options.") + key, "expected a string, got " + jo[key].dump());
+      r.fail(std::string("options.") + key,
+             "expected a string, got " + detail::json_short(jo[key]));
     x = jo[key].get<std::string>();
   };
   auto strings = [&](const char* key, std::vector<std::string>& x) {
     if (!jo.contains(key)) return;
     const auto& a = jo[key];
-    if (!a.is_array()) r.fail(std::string("options.") + key, "expected an array of strings");
+    if (!a.is_array())
+      r.fail(std::string("options.") + key,
+             "expected an array of strings, got " + std::string(a.type_name()));
     x.clear();
     for (std::size_t i = 0; i < a.size(); ++i) {
       if (!a[i].is_string())
-        r.fail(std::string("options.") + key + "[" + std::to_string(i) + "]", "expected a string");
+        r.fail(std::string("options.") + key + "[" + std::to_string(i) + "]",
+               "expected a string, got " + detail::json_short(a[i]));
       x.push_back(a[i].get<std::string>());
     }
   };
   auto numbers = [&](const char* key, std::vector<double>& x) {
     if (!jo.contains(key)) return;
     const auto& a = jo[key];
-    if (!a.is_array()) r.fail(std::string("options.") + key, "expected an array of numbers");
+    if (!a.is_array())
+      r.fail(std::string("options.") + key,
+             "expected an array of numbers, got " + std::string(a.type_name()));
     x.clear();
     for (std::size_t i = 0; i < a.size(); ++i)
       x.push_back(r.number(a[i], std::string("options.") + key + "[" + std::to_string(i) + "]"));
@@ -179,6 +209,11 @@ nearest_neighbor_controller<Root> nearest_neighbor_from_json(
            "expected \"joint_torque\" or \"joint_target\", got \"" + output + "\"");
   numbers("kp", o.kp);
   numbers("kd", o.kd);
+  for (const auto& [key, gains] : {std::pair{"kp", &o.kp}, std::pair{"kd", &o.kd}})
+    if (!gains->empty() && static_cast<int>(gains->size()) != m.num_joint_dofs())
+      r.fail(std::string("options.") + key, "expected " + std::to_string(m.num_joint_dofs()) +
+                                                " gains (one per joint DOF of model '" + m.name +
+                                                "'), got " + std::to_string(gains->size()));
   num("torque_limit", o.torque_limit);
   boolean("torso_servo", o.torso_servo);
   string("torso_body", o.torso_body);
@@ -192,7 +227,9 @@ nearest_neighbor_controller<Root> nearest_neighbor_from_json(
   boolean("compensate_swing_hip", o.compensate_swing_hip);
   num("period", o.period);
 
-  if (!j.contains("nodes") || !j["nodes"].is_array()) r.fail("nodes", "missing array");
+  if (!j.contains("nodes")) r.fail("nodes", "missing array");
+  if (!j["nodes"].is_array())
+    r.fail("nodes", "expected an array, got " + std::string(j["nodes"].type_name()));
   const auto& jn = j["nodes"];
   const int nfree = o.symmetric ? o.num_nodes / 2 : o.num_nodes;
   if (static_cast<int>(jn.size()) < nfree)
@@ -208,36 +245,40 @@ nearest_neighbor_controller<Root> nearest_neighbor_from_json(
   for (int i = 0; i < nfree; ++i) {
     const std::string where = "nodes[" + std::to_string(i) + "]";
     const auto& n = jn[i];
-    if (!n.is_object()) r.fail(where, "expected an object");
+    if (!n.is_object()) r.fail(where, "expected an object, got " + std::string(n.type_name()));
     if (n.contains("mirror_of"))
       r.fail(where, "the first " + std::to_string(nfree) + " nodes must be free (no mirror_of)");
-    if (!n.contains("location") || !n["location"].is_object())
-      r.fail(where + ".location", "missing object");
-    if (!n.contains("output") || !n["output"].is_object())
-      r.fail(where + ".output", "missing object");
+    for (const char* key : {"location", "output"}) {
+      if (!n.contains(key)) r.fail(where + "." + key, "missing object");
+      if (!n[key].is_object())
+        r.fail(where + "." + key, "expected an object, got " + std::string(n[key].type_name()));
+    }
     nn_node& nd = nodes[i];
+    // Unknown names first: a misspelt name is reported as itself, not as the name it misses.
+    for (auto it = n["location"].begin(); it != n["location"].end(); ++it)
+      if (std::find(input.begin(), input.end(), it.key()) == input.end())
+        r.fail(where + ".location." + it.key(), "'" + it.key() + "' is not an input coordinate");
     nd.location.resize(static_cast<Eigen::Index>(input.size()));
     for (std::size_t k = 0; k < input.size(); ++k) {
       const std::string w = where + ".location." + input[k];
       if (!n["location"].contains(input[k])) r.fail(w, "missing");
       nd.location[static_cast<Eigen::Index>(k)] = r.number(n["location"][input[k]], w);
     }
-    for (auto it = n["location"].begin(); it != n["location"].end(); ++it)
-      if (std::find(input.begin(), input.end(), it.key()) == input.end())
-        r.fail(where + ".location." + it.key(), "'" + it.key() + "' is not an input coordinate");
+    for (auto it = n["output"].begin(); it != n["output"].end(); ++it)
+      if (m.find_dof(it.key()) < 0)
+        r.fail(where + ".output." + it.key(), "unknown DOF name '" + it.key() + "'");
     nd.output.resize(m.num_joint_dofs());
     for (int d = 0; d < m.num_joint_dofs(); ++d) {
       const std::string w = where + ".output." + m.dofs[d].name;
       if (!n["output"].contains(m.dofs[d].name)) r.fail(w, "missing");
       nd.output[d] = r.number(n["output"][m.dofs[d].name], w);
     }
-    for (auto it = n["output"].begin(); it != n["output"].end(); ++it)
-      if (m.find_dof(it.key()) < 0)
-        r.fail(where + ".output." + it.key(), "unknown DOF name '" + it.key() + "'");
     nd.torso_pitch =
         n.contains("torso_pitch") ? r.number(n["torso_pitch"], where + ".torso_pitch") : 0.0;
-    const std::string st =
-        n.contains("stance") && n["stance"].is_string() ? n["stance"].get<std::string>() : "none";
+    if (n.contains("stance") && !n["stance"].is_string())
+      r.fail(where + ".stance",
+             "expected \"left\", \"right\" or \"none\", got " + detail::json_short(n["stance"]));
+    const std::string st = n.contains("stance") ? n["stance"].get<std::string>() : "none";
     if (st == "left")
       nd.stance = stance_side::left;
     else if (st == "right")
@@ -273,13 +314,9 @@ nearest_neighbor_controller<Root> load_nearest_neighbor(const model<Root>& m,
   if (!in) throw keyframes_error(path.string() + ": cannot open controller file");
   std::stringstream ss;
   ss << in.rdbuf();
-  nlohmann::json j;
-  try {
-    j = nlohmann::json::parse(ss.str());
-  } catch (const nlohmann::json::parse_error& e) {
-    throw keyframes_error(path.filename().string() + ": malformed JSON: " + e.what());
-  }
-  return nearest_neighbor_from_json(m, j, path.filename().string());
+  const std::string source = path.filename().string();
+  return nearest_neighbor_from_json(m, detail::parse_json_text<keyframes_error>(ss.str(), source),
+                                    source);
 }
 
 }  // namespace gaitsynth

@@ -8,9 +8,10 @@
 ///   load_normative_gait("data/normative_gait/falisse2019_subject1_walking.csv"); const
 ///   normative_curve& knee = h.curve("knee_flexion_angle");   // deg, flexion positive
 ///
-/// Every defect (a missing column, a short row, a number that is not finite, a percentage outside
-/// [0, 100] or out of order, a negative s.d., a unit that changes within a variable) throws
-/// normative_gait_error naming the file, the line and the value; nothing is half-loaded.
+/// Every defect (a missing or repeated column, a short row, a number that is not finite, a
+/// percentage outside [0, 100] or out of order, a negative s.d., a unit that changes within a
+/// variable) throws normative_gait_error naming the file, the line and the value; nothing is
+/// half-loaded.
 #include <algorithm>
 #include <array>
 #include <charconv>
@@ -82,10 +83,19 @@ inline normative_gait read_normative_gait(std::istream& in, const std::string& s
   const std::vector<std::string> header = split_fields(text);
   constexpr std::array<std::string_view, 6> names{
       "speed_mps", "percent_gait_cycle", "variable", "mean", "sd", "unit"};
+  for (std::size_t k = 0; k < header.size(); ++k)
+    for (std::size_t i = 0; i < k; ++i)
+      if (!header[k].empty() && header[i] == header[k])
+        fail(1, "header column '" + header[k] + "' appears twice (columns " +
+                    std::to_string(i + 1) + " and " + std::to_string(k + 1) + ")");
   std::array<std::size_t, 6> col{};
   for (std::size_t k = 0; k < names.size(); ++k) {
     const auto it = std::find(header.begin(), header.end(), names[k]);
-    if (it == header.end()) fail(1, "header has no column '" + std::string(names[k]) + "'");
+    if (it == header.end()) {
+      std::string has = text.substr(0, 80);
+      if (text.size() > 80) has += "...";
+      fail(1, "header has no column '" + std::string(names[k]) + "' (header: '" + has + "')");
+    }
     col[k] = static_cast<std::size_t>(it - header.begin());
   }
   normative_gait g;
@@ -101,7 +111,9 @@ inline normative_gait read_normative_gait(std::istream& in, const std::string& s
       double v = 0;
       const auto [end, ec] = std::from_chars(s.data(), s.data() + s.size(), v);
       if (ec != std::errc() || end != s.data() + s.size() || !std::isfinite(v))
-        fail(line_no, std::string(names[k]) + " '" + s + "' is not a finite number");
+        fail(line_no, std::string(names[k]) + " '" +
+                          (s.size() <= 40 ? s : s.substr(0, 40) + "...") +
+                          "' is not a finite number");
       return v;
     };
     const double speed = number(0), pct = number(1), mean = number(3), sd = number(4);

@@ -27,8 +27,8 @@
 /// names the source, the line and, for a bad cell or value, the column number and header cell: a
 /// missing or foreign first line, a header cell without a [unit], with the wrong unit, of unknown
 /// kind, repeated or missing, a row with too few or too many fields, a value that is not a number
-/// (or not 0/1, not an int), a last line without its end-of-line, or fewer rows than the
-/// "# frames:" line declares (a truncated file).
+/// (or not 0/1, not an int; nan and inf are values, but not as the time), a last line without its
+/// end-of-line, or fewer rows than the "# frames:" line declares (a truncated file).
 ///
 /// Parts: trajectory_csv/writer.hpp, reader.hpp (tokenizer.hpp, metadata.hpp, header.hpp,
 /// rows.hpp), both over schema.hpp.

@@ -39,6 +39,7 @@
 #include <string>
 #include <vector>
 
+#include "gaitsynth/detail/json_text.hpp"
 #include "gaitsynth/error.hpp"
 #include "gaitsynth/motion/keyframes.hpp"
 
@@ -198,7 +199,9 @@ keyframe_motion<Root> keyframes_from_json(const model<Root>& m, const nlohmann::
   if constexpr (Root::nq == 7) defaults[3] = 1.0, defaults[4] = defaults[5] = defaults[6] = 0.0;
   if (j.contains("defaults")) {
     const auto& d = j["defaults"];
-    if (!d.is_object()) r.fail("defaults", "expected an object of DOF name: value");
+    if (!d.is_object())
+      r.fail("defaults",
+             "expected an object of DOF name: value, got " + std::string(d.type_name()));
     for (auto it = d.begin(); it != d.end(); ++it) {
       const std::string where = "defaults." + it.key();
       const int i = index_of(it.key(), where);
@@ -213,7 +216,9 @@ keyframe_motion<Root> keyframes_from_json(const model<Root>& m, const nlohmann::
   Eigen::VectorXd advance = Eigen::VectorXd::Zero(Root::nq);
   if (j.contains("advance")) {
     const auto& a = j["advance"];
-    if (!a.is_object()) r.fail("advance", "expected an object such as {\"root_x\": 0.6}");
+    if (!a.is_object())
+      r.fail("advance",
+             "expected an object such as {\"root_x\": 0.6}, got " + std::string(a.type_name()));
     for (auto it = a.begin(); it != a.end(); ++it) {
       const std::string where = "advance." + it.key();
       const int i = index_of(it.key(), where);
@@ -227,12 +232,15 @@ keyframe_motion<Root> keyframes_from_json(const model<Root>& m, const nlohmann::
   if (!j.contains("keyframes")) r.fail("keyframes", "missing");
   const auto& ks = j["keyframes"];
   if (!ks.is_array() || ks.empty())
-    r.fail("keyframes", "expected a non-empty array of {\"time\": ..., \"pose\": ...}");
+    r.fail("keyframes", "expected a non-empty array of {\"time\": ..., \"pose\": ...}, got " +
+                            (ks.is_array() ? std::string("[]") : std::string(ks.type_name())));
   std::vector<keyframe> frames;
   for (std::size_t k = 0; k < ks.size(); ++k) {
     const std::string where = "keyframes[" + std::to_string(k) + "]";
     const auto& kf = ks[k];
-    if (!kf.is_object()) r.fail(where, "expected an object with \"time\" and \"pose\"");
+    if (!kf.is_object())
+      r.fail(where,
+             "expected an object with \"time\" and \"pose\", got " + std::string(kf.type_name()));
     for (auto it = kf.begin(); it != kf.end(); ++it)
       if (it.key() != "time" && it.key() != "pose" && it.key() != "name")
         r.fail(where + "." + it.key(), "unknown key '" + it.key() + "' (known: time, pose, name)");
@@ -291,17 +299,13 @@ keyframe_motion<Root> keyframes_from_json(const model<Root>& m, const nlohmann::
   }
 }
 
-/// Parses keyframes from a JSON string. Throws keyframes_error (also for malformed JSON).
+/// Parses keyframes from a JSON string. Throws keyframes_error (also for malformed JSON, a number
+/// too large for a double, a repeated key or nesting deeper than detail::max_json_depth: see
+/// detail/json_text.hpp).
 template <root_joint Root>
 keyframe_motion<Root> parse_keyframes(const model<Root>& m, const std::string& text,
                                       const std::string& source = "<keyframes>") {
-  nlohmann::json j;
-  try {
-    j = nlohmann::json::parse(text);
-  } catch (const nlohmann::json::parse_error& e) {
-    throw keyframes_error(source + ": malformed JSON: " + e.what());
-  }
-  return keyframes_from_json(m, j, source);
+  return keyframes_from_json(m, detail::parse_json_text<keyframes_error>(text, source), source);
 }
 
 /// Loads a keyframe file. Throws keyframes_error for a missing/unreadable file or bad content.

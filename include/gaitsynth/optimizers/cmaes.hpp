@@ -434,7 +434,13 @@ class cmaes {
     stopped_ = static_cast<stop_criterion>(r.integer("stopped"));
     r.rng("rng", rng_);
     mean_ = r.vector("mean", n_);
+    for (int i = 0; i < n_; ++i)
+      if (!std::isfinite(mean_[i]))
+        r.error("mean component " + std::to_string(i) + " is " + std::to_string(mean_[i]) +
+                ", not a finite number");
     sigma_ = r.real("sigma");
+    if (!(std::isfinite(sigma_) && sigma_ > 0))
+      r.error("sigma is " + std::to_string(sigma_) + ", not a finite number > 0");
     C_ = r.matrix("C", n_, n_);
     B_ = r.matrix("B", n_, n_);
     D_ = r.vector("D", n_);

@@ -22,6 +22,7 @@
 #include <limits>
 #include <span>
 #include <stdexcept>
+#include <string>
 #include <string_view>
 #include <vector>
 
@@ -220,8 +221,14 @@ class sds {
     last_improvement_ = r.integer("last_improvement");
     stopped_ = static_cast<stop_criterion>(r.integer("stopped"));
     theta_ = r.vector("theta", n);
+    for (Eigen::Index i = 0; i < n; ++i)
+      if (!std::isfinite(theta_[i]))
+        r.error("theta component " + std::to_string(i) + " is " + std::to_string(theta_[i]) +
+                ", not a finite number");
     f_theta_ = r.real("f_theta");
     alpha_ = r.real("alpha");
+    if (!(std::isfinite(alpha_) && alpha_ >= 0))
+      r.error("alpha is " + std::to_string(alpha_) + ", not a finite number >= 0");
     best_value_ = r.real("best_value");
     best_x_ = r.vector("best_x", n);
     batch_values_ = r.reals("batch_values");

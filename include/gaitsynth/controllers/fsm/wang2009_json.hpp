@@ -14,14 +14,19 @@
 ///     }
 ///
 /// nlohmann::json writes doubles as the shortest decimals that read back exactly, so a saved
-/// controller replays bit for bit. Errors are std::invalid_argument naming the file and field.
+/// controller replays bit for bit. Errors are std::invalid_argument naming the file, the field and
+/// the bad value.
+#include <algorithm>
 #include <fstream>
+#include <iterator>
 #include <nlohmann/json.hpp>
 #include <optional>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
 #include "gaitsynth/controllers/fsm/wang2009_controller.hpp"
+#include "gaitsynth/detail/json_text.hpp"
 #include "gaitsynth/error.hpp"
 
 namespace gaitsynth {
@@ -34,43 +39,81 @@ struct wang2009_saved_controller {
   nlohmann::json info = nlohmann::json::object();
 };
 
+namespace detail {
+
+/// The text of a controller file, parsed (detail/json_text.hpp); std::invalid_argument naming
+/// `path`.
+inline nlohmann::json read_wang2009_json(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  check_argument(in.good(), "cannot open controller file '", path, "'");
+  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  return parse_json_text<std::invalid_argument>(text, path);
+}
+
+[[noreturn]] inline void wang2009_json_fail(const std::string& path, const std::string& field,
+                                            const std::string& what) {
+  throw std::invalid_argument(path + ": field '" + field + "': " + what);
+}
+
+/// A value of a controller file for messages: its JSON, cut at 60 characters.
+inline std::string wang2009_json_value(const nlohmann::json& v) {
+  std::string s = v.dump();
+  return s.size() > 60 ? s.substr(0, 57) + "..." : s;
+}
+
+}  // namespace detail
+
 /// The shape named by a saved controller (to build its model before reading its parameters).
 inline std::string wang2009_saved_shape(const std::string& path) {
-  std::ifstream in(path);
-  check_argument(in.good(), "cannot open controller file '", path, "'");
-  try {
-    return nlohmann::json::parse(in).at("shape").get<std::string>();
-  } catch (const nlohmann::json::exception& e) {
-    throw std::invalid_argument(path + ": no shape (" + e.what() + ")");
-  }
+  const nlohmann::json j = detail::read_wang2009_json(path);
+  if (!j.is_object() || !j.contains("shape") || !j["shape"].is_string())
+    throw std::invalid_argument(path + ": field 'shape': expected a string, got " +
+                                (j.is_object() && j.contains("shape")
+                                     ? detail::wang2009_json_value(j["shape"])
+                                     : std::string("nothing")));
+  return j["shape"].get<std::string>();
 }
 
 /// Reads `path` for controller c (its parameter names). Throws std::invalid_argument naming the
-/// file and the missing or malformed field.
+/// file, the missing, unknown or malformed field and the bad value.
 inline wang2009_saved_controller load_wang2009_controller(const std::string& path,
                                                           const wang2009_controller& c) {
-  std::ifstream in(path);
-  check_argument(in.good(), "cannot open controller file '", path, "'");
+  const nlohmann::json j = detail::read_wang2009_json(path);
+  auto fail = [&](const std::string& field, const std::string& what) {
+    detail::wang2009_json_fail(path, field, what);
+  };
+  auto number = [&](const nlohmann::json& v, const std::string& field) {
+    if (!v.is_number())
+      fail(field,
+           "expected a number, got " + detail::wang2009_json_value(v) + " (" + v.type_name() + ")");
+    return v.get<double>();  // finite: the text has no NaN and json_text_problem refuses overflow
+  };
+  if (!j.is_object()) fail("(top level)", std::string("expected an object, got ") + j.type_name());
   wang2009_saved_controller s;
-  std::string field = "(the JSON text)";
-  try {
-    const nlohmann::json j = nlohmann::json::parse(in);
-    field = "shape";
-    s.shape = j.at("shape").get<std::string>();
-    field = "target_speed";
-    if (j.contains(field) && !j[field].is_null()) s.target_speed = j[field].get<double>();
-    field = "target_step_length";
-    if (j.contains(field) && !j[field].is_null()) s.target_step_length = j[field].get<double>();
-    field = "cost";
-    if (j.contains(field)) s.cost = j[field].is_null() ? 0.0 : j[field].get<double>();
-    field = "info";
-    if (j.contains(field)) s.info = j[field];
-    for (const std::string& n : c.parameter_names()) {
-      field = "parameters." + n;
-      s.parameters.push_back(j.at("parameters").at(n).get<double>());
-    }
-  } catch (const nlohmann::json::exception& e) {
-    throw std::invalid_argument(path + ": field '" + field + "': " + e.what());
+  if (!j.contains("shape")) fail("shape", "missing");
+  if (!j["shape"].is_string())
+    fail("shape", "expected a string, got " + detail::wang2009_json_value(j["shape"]));
+  s.shape = j["shape"].get<std::string>();
+  auto optional_number = [&](const char* field, std::optional<double>& x) {
+    if (j.contains(field) && !j[field].is_null()) x = number(j[field], field);
+  };
+  optional_number("target_speed", s.target_speed);
+  optional_number("target_step_length", s.target_step_length);
+  if (j.contains("cost")) s.cost = j["cost"].is_null() ? 0.0 : number(j["cost"], "cost");
+  if (j.contains("info")) s.info = j["info"];
+  if (!j.contains("parameters")) fail("parameters", "missing");
+  const nlohmann::json& p = j["parameters"];
+  if (!p.is_object())
+    fail("parameters", std::string("expected an object of name: value, got ") + p.type_name());
+  const std::vector<std::string> names = c.parameter_names();
+  for (auto it = p.begin(); it != p.end(); ++it)
+    if (std::find(names.begin(), names.end(), it.key()) == names.end())
+      fail("parameters." + it.key(), "unknown parameter '" + it.key() + "' (the controller has " +
+                                         std::to_string(names.size()) + " parameters: " +
+                                         names.front() + ", ..., " + names.back() + ")");
+  for (const std::string& n : names) {
+    if (!p.contains(n)) fail("parameters." + n, "missing");
+    s.parameters.push_back(number(p[n], "parameters." + n));
   }
   return s;
 }

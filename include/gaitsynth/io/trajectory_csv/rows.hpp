@@ -2,8 +2,9 @@
 /// \file trajectory_csv/rows.hpp
 /// The reader's row part: one data line into one trajectory_frame, field by field through the
 /// header's columns and trajectory_channels' set(), each value checked (a number, a 0/1 flag, an
-/// int) and a bad one reported with its line, column number and header cell.
+/// int; the time finite) and a bad one reported with its line, column number and header cell.
 #include <climits>
+#include <cmath>
 #include <cstddef>
 #include <string>
 #include <string_view>
@@ -52,6 +53,9 @@ inline void read_row(std::string_view line, int ln, const header& h, trajectory_
     } else {
       if (!parse_all(s, x))
         throw fail(ln, cn, unreadable(s, "a number", "column '" + c.cell + "'"));
+      // Values may be nan or inf (a diverged simulation records them), the time may not.
+      if (c.channel == 0 && !std::isfinite(x))
+        throw fail(ln, cn, "the time must be finite, got '" + std::string(s) + "'");
       if (ch.type == channel::value::flag && x != 0 && x != 1)
         throw fail(ln, cn,
                    "'" + std::string(component(ch, c.component)) + "' must be 0 or 1, got '" +
