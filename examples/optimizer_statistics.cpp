@@ -12,10 +12,11 @@
 // scripts/plot_convergence.py). --help lists every flag with its default and range.
 //
 // Cases: sphere ellipsoid rotated_ellipsoid rosenbrock cigar discus (CMA-ES, x0 ~ U[-3, 3]^n,
-// sigma0 = 2, target 1e-8), rastrigin_ipop rastrigin_bipop (same start, up to 9 restarts, 2e6
-// evaluations), bounded_sphere bounded_sphere_repair (optimum 0.9 in [0, 1]^n, mean 0.5,
-// sigma0 = 0.3, rejection sampling / repair), sds_quadratic (sum (i+1)(x_i - 1)^2 to 1e-8) and
-// sds_rosenbrock (to 1e-6), SDS from x0 ~ U[-3, 3]^n with alpha0 = 0.5.
+// sigma0 = 2, target 1e-8), rastrigin_ipop rastrigin_ipop_unrounded rastrigin_bipop (same
+// start, up to 9 restarts, 2e6 evaluations; _unrounded:
+// restart_options::unrounded_population_base), bounded_sphere bounded_sphere_repair (optimum 0.9 in
+// [0, 1]^n, mean 0.5, sigma0 = 0.3, rejection sampling / repair), sds_quadratic (sum (i+1)(x_i -
+// 1)^2 to 1e-8) and sds_rosenbrock (to 1e-6), SDS from x0 ~ U[-3, 3]^n with alpha0 = 0.5.
 #include <gaitsynth/optimizers/optimizers.hpp>
 #include <gaitsynth/optimizers/test_functions.hpp>
 
@@ -76,7 +77,8 @@ run_outcome run_cmaes(F f, int n, std::uint64_t seed, unsigned threads) {
   return {r.stopped == stop_criterion::target_value, r.evaluations, r.value, r.stopped, 0};
 }
 
-run_outcome run_rastrigin(int n, std::uint64_t seed, restart_strategy strategy, unsigned threads) {
+run_outcome run_rastrigin(int n, std::uint64_t seed, restart_strategy strategy, unsigned threads,
+                          bool unrounded = false) {
   cmaes_options o;
   o.sigma0 = 2.0;
   o.seed = seed;
@@ -85,6 +87,7 @@ run_outcome run_rastrigin(int n, std::uint64_t seed, restart_strategy strategy, 
   restart_options ro;
   ro.strategy = strategy;
   ro.max_restarts = 9;
+  ro.unrounded_population_base = unrounded;
   cmaes_restarts es(parameter_space::unbounded(uniform_x0(n, -3, 3, seed)), o, ro);
   thread_pool_evaluator pool(threads);
   const auto r = minimize(es, test_functions::rastrigin, pool, logging());
@@ -125,18 +128,11 @@ int main(int argc, char** argv) try {
   unsigned long long first_seed = 0;
   std::optional<unsigned long long> log_seed;
   unsigned threads = 0;  // every core
-  const std::vector<std::string> all_cases = {"sphere",
-                                              "ellipsoid",
-                                              "rotated_ellipsoid",
-                                              "rosenbrock",
-                                              "cigar",
-                                              "discus",
-                                              "rastrigin_ipop",
-                                              "rastrigin_bipop",
-                                              "bounded_sphere",
-                                              "bounded_sphere_repair",
-                                              "sds_quadratic",
-                                              "sds_rosenbrock"};
+  const std::vector<std::string> all_cases = {
+      "sphere",          "ellipsoid",      "rotated_ellipsoid",     "rosenbrock",
+      "cigar",           "discus",         "rastrigin_ipop",        "rastrigin_ipop_unrounded",
+      "rastrigin_bipop", "bounded_sphere", "bounded_sphere_repair", "sds_quadratic",
+      "sds_rosenbrock"};
   std::vector<std::string> cases = all_cases;
   std::string csv;
   CLI::App app{
@@ -203,6 +199,8 @@ int main(int argc, char** argv) try {
           r = run_cmaes(test_functions::discus, n, seed, threads);
         else if (c == "rastrigin_ipop")
           r = run_rastrigin(n, seed, restart_strategy::ipop, threads);
+        else if (c == "rastrigin_ipop_unrounded")
+          r = run_rastrigin(n, seed, restart_strategy::ipop, threads, true);
         else if (c == "rastrigin_bipop")
           r = run_rastrigin(n, seed, restart_strategy::bipop, threads);
         else if (c == "bounded_sphere")
