@@ -322,4 +322,35 @@ inline std::vector<std::string> recorded_arguments(const std::filesystem::path& 
   return args;
 }
 
+/// --resume DIR: parses the options recorded in DIR/options.json again with `app` (which parsed
+/// the resume command), so the run goes on exactly as it started. The options named in `also`
+/// (those that do not change the result, such as threads) may be given with --resume and keep
+/// the values given now; any other option given is refused.
+inline void reparse_recorded(CLI::App& app, const char* argv0, const std::string& dir,
+                             const std::vector<std::string>& also) {
+  std::vector<std::string> args{argv0};
+  for (const CLI::Option* o : all_options(app)) {
+    const std::string n = o->get_lnames().empty() ? "" : o->get_lnames().front();
+    if (o->count() == 0 || n == "resume") continue;
+    if (std::find(also.begin(), also.end(), n) == also.end()) {
+      std::string allowed;
+      for (const std::string& a : also) allowed += (allowed.empty() ? "--" : ", --") + a;
+      throw std::invalid_argument("--resume " + dir + ": the run goes on with the options it " +
+                                  "recorded; --" + n + " cannot be given with it (only " + allowed +
+                                  ")");
+    }
+    if (o->get_expected_max() == 0)
+      args.push_back("--" + n);
+    else
+      for (const std::string& r : o->results()) args.insert(args.end(), {"--" + n, r});
+  }
+  std::vector<std::string> skip = also;
+  skip.insert(skip.end(), {"out", "resume"});
+  for (const std::string& a : recorded_arguments(dir, skip)) args.push_back(a);
+  std::vector<char*> av;
+  for (std::string& a : args) av.push_back(a.data());
+  app.clear();
+  parse(app, static_cast<int>(av.size()), av.data());
+}
+
 }  // namespace example_cli

@@ -93,28 +93,7 @@ inline cli parse(int argc, char** argv, const char* what) {
   std::string command;
   for (int i = 0; i < argc; ++i) command += (i ? " " : "") + std::string(argv[i]);
   if (!resume.empty()) {
-    for (const CLI::Option* o : example_cli::all_options(app)) {
-      const std::string n = o->get_lnames().empty() ? "" : o->get_lnames().front();
-      if (o->count() > 0 && n != "resume" && n != "threads")
-        throw std::invalid_argument("--resume " + resume +
-                                    ": the run goes on with the options "
-                                    "it recorded; --" +
-                                    n +
-                                    " cannot be given with it (only "
-                                    "--threads)");
-    }
-    std::vector<std::string> args{argv[0]};
-    for (const std::string& a :
-         example_cli::recorded_arguments(resume, {"out", "resume", "threads"}))
-      args.push_back(a);
-    const unsigned threads = c.threads;
-    c = cli{};
-    horizons.clear();
-    std::vector<char*> av;
-    for (std::string& a : args) av.push_back(a.data());
-    app.clear();
-    example_cli::parse(app, static_cast<int>(av.size()), av.data());
-    c.threads = threads;
+    example_cli::reparse_recorded(app, argv[0], resume, {"threads"});
     c.resume = true;
     out = resume;
   }

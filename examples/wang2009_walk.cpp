@@ -168,27 +168,8 @@ cli parse(int argc, char** argv) {
   example_cli::add_viewer_flags(app, c.viz);
   example_cli::parse(app, argc, argv);
   if (!resume.empty()) {
-    for (const CLI::Option* o : example_cli::all_options(app)) {
-      const std::string n = o->get_lnames().empty() ? "" : o->get_lnames().front();
-      check_argument(o->count() == 0 || n == "resume" || n == "threads" || n == "mpi", "--resume ",
-                     resume, ": the run goes on with the options it recorded; --", n,
-                     " cannot be given with it (only --threads and --mpi)");
-    }
     // (the thread count and MPI do not change the result: this command's own apply)
-    std::vector<std::string> kept{argv[0]};
-    for (const std::string& a :
-         example_cli::recorded_arguments(resume, {"out", "resume", "threads", "mpi"}))
-      kept.push_back(a);
-    const unsigned threads = c.threads;
-    const bool mpi = c.mpi;
-    c = cli{};
-    c.command = std::string(argv[0]) + " --resume " + resume;
-    std::vector<char*> av;
-    for (std::string& a : kept) av.push_back(a.data());
-    app.clear();
-    example_cli::parse(app, static_cast<int>(av.size()), av.data());
-    c.threads = threads;
-    c.mpi = mpi;
+    example_cli::reparse_recorded(app, argv[0], resume, {"threads", "mpi"});
     out = resume;
     c.resume = true;
   }

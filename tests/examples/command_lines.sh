@@ -26,6 +26,8 @@ case "$mode" in
   bad_values)
     for exe in "$@"; do
       name=$(basename "$exe")
+      before=$fail
+      fail=0
       help=$("$exe" --help 2>&1)
       rc=$?
       if [[ $rc -ne 0 ]] || ! grep -q -- "--help" <<<"$help"; then
@@ -50,7 +52,8 @@ case "$mode" in
       if grep -q -- "--html" <<<"$help"; then
         expect 2 "--html" -- "$exe" --html
       fi
-      echo "ok: $name"
+      [[ $fail -eq 0 ]] && echo "ok: $name"
+      [[ $before -ne 0 ]] && fail=1
     done
     ;;
   resume)
