@@ -111,8 +111,9 @@ int run(const options& o, const std::string& title, const planar_model& m,
   // As tests/sharon2005/claims.cpp: lowest foot point on z = 0 (every terrain here is level at the
   // start).
   ro.initial_state = place ? sharon_scenarios::start_state_for(m, target) : target.initial_state();
-  const rollout_problem prob{m,      torque_actuator{},     ctrl, mass_distance<planar_root>(m, target),
-                        ground, semi_implicit_euler{}, ro};
+  const rollout_problem prob{
+      m,      torque_actuator{},     ctrl, mass_distance<planar_root>(m, target),
+      ground, semi_implicit_euler{}, ro};
   const auto p = ctrl.parameters();
   const Eigen::VectorXd x =
       Eigen::Map<const Eigen::VectorXd>(p.data(), static_cast<Eigen::Index>(p.size()));

@@ -49,8 +49,9 @@ void walk(const char* name, const planar_model& m, const std::string& cf, const 
   const auto ctrl = load_nearest_neighbor(cm, D(cf));
   rollout_options ro;
   ro.initial_state = place ? sharon_scenarios::start_state_for(m, target) : target.initial_state();
-  const rollout_problem prob{m,      torque_actuator{},     ctrl, mass_distance<planar_root>(m, target),
-                        ground, semi_implicit_euler{}, ro};
+  const rollout_problem prob{
+      m,      torque_actuator{},     ctrl, mass_distance<planar_root>(m, target),
+      ground, semi_implicit_euler{}, ro};
   const auto p = ctrl.parameters();
   Eigen::VectorXd x = Eigen::Map<const Eigen::VectorXd>(p.data(), p.size());
   auto w = check_walk(prob, x, secs);

@@ -8,7 +8,8 @@
 /// paper's is the mass-distance metric (objectives/mass_distance.hpp, eqs. 2-3).
 ///
 ///   rollout_problem prob{model, torque_actuator{}, controller0, mass_distance(model, target),
-///                        flat_terrain{}, semi_implicit_euler{}, rollout_options_with_initial_state};
+///                        flat_terrain{}, semi_implicit_euler{},
+///                        rollout_options_with_initial_state};
 ///
 /// (The type is an nn_problem. Deduce it through rollout_problem, as above: deduction through an
 /// alias template is C++20, but clang 14 and older do not implement it.)
