@@ -35,52 +35,45 @@
 
 namespace example_cli {
 
-/// A number in [lo, hi] (finite); the message names the flag, the range and the value.
-inline CLI::Validator in_range(double lo, double hi) {
-  std::ostringstream d;
-  d << "in [" << lo << ", " << hi << "]";
+/// A value read whole by `read` (std::stod, std::stoll) and within [lo, hi]; `kind` names what it
+/// must be ("a number", "a whole number") when it is not one.
+template <class T, class Read>
+CLI::Validator read_in_range(T lo, T hi, const std::string& description, const std::string& kind,
+                             Read read) {
   return CLI::Validator(
-      [lo, hi](std::string& s) -> std::string {
-        double v = 0.0;
+      [lo, hi, kind, read](std::string& s) -> std::string {
+        T v{};
         std::size_t used = 0;
         try {
-          v = std::stod(s, &used);
+          v = read(s, &used);
         } catch (...) {
           used = 0;
         }
-        if (used != s.size() || s.empty()) return "'" + s + "' is not a number";
-        if (!(std::isfinite(v) && v >= lo && v <= hi)) {
+        if (used != s.size() || s.empty()) return "'" + s + "' is not " + kind;
+        if (!(v >= lo && v <= hi)) {  // (NaN fails too)
           std::ostringstream m;
           m << "must be in [" << lo << ", " << hi << "], got " << s;
           return m.str();
         }
         return {};
       },
-      d.str());
+      description);
+}
+
+/// A number in [lo, hi] (finite); the message names the flag, the range and the value.
+inline CLI::Validator in_range(double lo, double hi) {
+  std::ostringstream d;
+  d << "in [" << lo << ", " << hi << "]";
+  return read_in_range(lo, hi, d.str(), "a number",
+                       [](const std::string& s, std::size_t* used) { return std::stod(s, used); });
 }
 
 /// A whole number in [lo, hi]: "1.5", "-1" for a count or "3x" are refused by name.
 inline CLI::Validator integer_in(long long lo, long long hi) {
   std::ostringstream d;
   d << "integer in [" << lo << ", " << hi << "]";
-  return CLI::Validator(
-      [lo, hi](std::string& s) -> std::string {
-        long long v = 0;
-        std::size_t used = 0;
-        try {
-          v = std::stoll(s, &used);
-        } catch (...) {
-          used = 0;
-        }
-        if (used != s.size() || s.empty()) return "'" + s + "' is not a whole number";
-        if (v < lo || v > hi) {
-          std::ostringstream m;
-          m << "must be in [" << lo << ", " << hi << "], got " << s;
-          return m.str();
-        }
-        return {};
-      },
-      d.str());
+  return read_in_range(lo, hi, d.str(), "a whole number",
+                       [](const std::string& s, std::size_t* used) { return std::stoll(s, used); });
 }
 
 /// NAME=NUMBER (NAME=LO:HI with `pair`), as --weight and --bound take them.
