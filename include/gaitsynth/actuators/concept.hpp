@@ -30,8 +30,8 @@
 /// Optional hooks for actuators with dynamics, detected with requires:
 ///   a.advance(m, s, cmd, st, dt)       advance st over one physics step (the actuator integrates
 ///                                      itself, e.g. activation dynamics, exactly or implicitly),
-///                                      after the physics step, with the step's command and start
-///                                      state s (zero-order hold, like the torques)
+///                                      after the physics step, with the step's command (zero-order
+///                                      hold, like the torques) and the state s at the step's end
 ///   a.derivative(m, s, cmd, cst, dst)  d(st)/dt into dst (same type as st). When A::state_type is
 ///                                      Eigen::VectorXd and the integrator takes a first-order
 ///                                      state (integrators/concept.hpp), st is integrated WITH
@@ -41,6 +41,11 @@
 ///                                      fourth-order step of the coupled system, the torques
 ///                                      re-evaluated from (q, v, st) at every stage. Otherwise the
 ///                                      rollout takes st += dt * dst after the physics step.
+///   a.start(m, s, st)                  once per rollout, after the start state s is final and
+///                                      before the first step: st to match s (a muscle's fibers
+///                                      in equilibrium with its tendon at the start pose); may
+///                                      throw std::invalid_argument for a start state the
+///                                      actuator cannot take; must not allocate
 ///   a.sensed_size(m), a.sense(m, cst, out)   values exposed to controllers (see below)
 ///   a.joint_damping(m, s, cmd, cst, c) c_j >= 0 (N m s / rad), the joint-rate coefficient of each
 ///                                      DOF's law for (s, cmd): kd_j for a PD servo, before the
@@ -121,6 +126,13 @@ concept actuator_with_derivative = requires(const A& a, const model<Root>& m, co
 template <class A, class Root>
 concept actuator_with_continuous_state =
     actuator_with_derivative<A, Root> && std::same_as<typename A::state_type, Eigen::VectorXd>;
+
+/// Optional: the actuator's state set from the rollout's start state (see start above).
+template <class A, class Root>
+concept actuator_with_start = requires(const A& a, const model<Root>& m, const sim_state& s,
+                                       typename A::state_type& st) {
+  a.start(m, s, st);
+};
 
 /// Optional: the joint-rate coefficients of the torques (see joint_damping above).
 template <class A, class Root>

@@ -13,7 +13,8 @@
 /// Set-up (may allocate, may throw std::invalid_argument naming the bad value): validate dt and the
 /// options, controller.bind(params), check the command kinds, rebuild the scratch if the model's
 /// fingerprint changed, make or reset the policies' states (rollout/policy_states.hpp), size the
-/// command, place the initial state, size the sensor history, start the observers.
+/// command, place the initial state, let an actuator with a start hook match its state to it,
+/// size the sensor history, start the observers.
 ///
 /// Step k (t = t0 + k dt, computed, never accumulated, as Odeint's integrate_const does):
 ///   1. forward kinematics of (q, v); COM and COM velocity;
@@ -245,6 +246,7 @@ rollout_result rollout_impl(const model<Root>& m, const Actuator& act, C& ctrl,
   actuator_state& act_state = *states.actuator;
   // d(actuator state)/dt (used only by actuators with a derivative hook).
   [[maybe_unused]] actuator_state& act_rate = *states.actuator_rate;
+  if constexpr (actuator_with_start<Actuator, Root>) act.start(m, std::as_const(s), act_state);
   typename C::state_type& ctrl_state = *states.controller;
   typename Objective::accumulator_type& acc = *states.objective;
   const int ncmd = static_cast<int>(act.command_size(m));
