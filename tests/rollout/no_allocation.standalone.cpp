@@ -8,7 +8,11 @@
 
 #include <catch2/catch.hpp>
 
+#include <optional>
+
 #include "gaitsynth/actuators/mixed_pd.hpp"
+#include "gaitsynth/actuators/musculotendon/leg_muscles.hpp"
+#include "gaitsynth/actuators/musculotendon_actuator.hpp"
 #include "gaitsynth/actuators/pd.hpp"
 #include "gaitsynth/actuators/pd_law.hpp"
 #include "gaitsynth/actuators/torque.hpp"
@@ -21,13 +25,17 @@
 #include "gaitsynth/controllers/pose_hold.hpp"
 #include "gaitsynth/integrators/odeint.hpp"
 #include "gaitsynth/integrators/semi_implicit_euler.hpp"
+#include "gaitsynth/models/wang2012.hpp"
 #include "gaitsynth/motion/keyframes_json.hpp"
 #include "gaitsynth/objectives/distance.hpp"
 #include "gaitsynth/objectives/mass_distance.hpp"
 #include "gaitsynth/objectives/wang2009/wang2009_objective.hpp"
+#include "gaitsynth/objectives/wang2012/effort_terms.hpp"
+#include "gaitsynth/objectives/wang2012/metabolic_energy.hpp"
 #include "gaitsynth/rollout/problem.hpp"
 #include "gaitsynth/rollout/rollout.hpp"
 #include "gaitsynth/synthesis/nearest_neighbor_synthesis.hpp"
+#include "support/muscle_hold.hpp"
 #include "support/rollout_e2.hpp"
 
 using namespace gaitsynth;
@@ -94,13 +102,18 @@ struct delayed_reader {
   }
 };
 
-template <class Model, class Actuator, class Controller, class Terrain, class Integrator>
+/// The step loop of one rollout allocates nothing. `inner`: the objective (distance by
+/// default); `p`: the controller's parameters (the standing pose by default).
+template <class Model, class Actuator, class Controller, class Terrain, class Integrator,
+          class Inner = decltype(distance_objective())>
 void require_no_allocation(const Model& m, const Actuator& act, Controller&& ctrl,
-                           const Terrain& ground, Integrator&& integ, rollout_options opt) {
+                           const Terrain& ground, Integrator&& integ, rollout_options opt,
+                           Inner inner = distance_objective(),
+                           std::optional<Eigen::VectorXd> params = std::nullopt) {
   auto scratch = make_rollout_scratch(m);
   region r;
-  const counting_objective<decltype(distance_objective())> obj{distance_objective(), &r};
-  const Eigen::VectorXd p = standing_pose(m);
+  const counting_objective<Inner> obj{std::move(inner), &r};
+  const Eigen::VectorXd p = params ? *params : Eigen::VectorXd(standing_pose(m));
   const auto res = rollout(m, act, ctrl, obj, ground, integ, p, opt, scratch);
   Eigen::internal::set_is_malloc_allowed(true);
   INFO(m.name << ": " << to_string(res.reason) << " after " << res.steps << " steps");
@@ -208,6 +221,16 @@ TEST_CASE("no heap allocation in the step loop of a rollout", "[rollout][allocat
     static_assert(actuator_with_continuous_state<lagged_pd, floating_root>);
     require_no_allocation(m, lagged_pd{standing_pd(m, dt)}, pose_hold(m), flat_terrain(),
                           odeint_rk4(), options_for(m, flat_terrain()));
+  }
+  SECTION("3D humanoid, 16 Hill-type MTUs (Wang 2012), metabolic effort objective") {
+    const auto m = wang2012_humanoid();
+    const auto units = musculotendon::geyer_herr_leg_muscles(m);
+    const musculotendon_actuator act(units);
+    require_no_allocation(
+        m, act, test_support::muscle_hold::standing(m, act.num_units(), 0.2, dt), flat_terrain(),
+        semi_implicit_euler(), options_for(m, flat_terrain()),
+        wang2012::effort(m.total_mass(), units, wang2012::metabolic_energy(units)),
+        Eigen::VectorXd::Constant(1, 0.2));
   }
   SECTION("7-link planar human with the recorder on") {
     const auto m = sharon2005_human7();

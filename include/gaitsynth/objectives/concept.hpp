@@ -53,10 +53,13 @@ struct step_view {
   const Eigen::VectorXd* v_ptr = nullptr;            ///< nv, at t
   const Eigen::VectorXd* tau_ptr = nullptr;          ///< nv: actuator torques (root entries 0), N m
   const Eigen::VectorXd* tau_passive_ptr = nullptr;  ///< nv: joint-limit springs, N m
-  std::span<const mat3> body_rotation;               ///< R_world_body
-  std::span<const vec3> body_position;               ///< body origins, world, m
-  std::span<const vec3> body_angular_velocity;       ///< world axes, rad/s
-  std::span<const vec3> body_linear_velocity;        ///< body origin velocity, world, m/s
+  /// The actuator command held over [t, t + dt) (its size is the actuator's command_size: the
+  /// excitations u a metabolic objective charges, Wang et al. 2012 Sec. 5.1).
+  const Eigen::VectorXd* command_ptr = nullptr;
+  std::span<const mat3> body_rotation;            ///< R_world_body
+  std::span<const vec3> body_position;            ///< body origins, world, m
+  std::span<const vec3> body_angular_velocity;    ///< world axes, rad/s
+  std::span<const vec3> body_linear_velocity;     ///< body origin velocity, world, m/s
   std::span<const vec6> external_wrench;          ///< per body: [torque about origin; force], world
   std::span<const int> contact_count;             ///< per body: contact points touching
   std::span<const unsigned char> contact_active;  ///< per contact point
@@ -82,6 +85,7 @@ struct step_view {
   const Eigen::VectorXd& v() const { return *v_ptr; }
   const Eigen::VectorXd& tau() const { return *tau_ptr; }
   const Eigen::VectorXd& tau_passive() const { return *tau_passive_ptr; }
+  const Eigen::VectorXd& command() const { return *command_ptr; }
   /// Actuator torques of the joint DOFs only (num_joint_dofs).
   auto joint_torques() const { return tau_ptr->tail(model_ptr->num_joint_dofs()); }
   auto joint_velocities() const { return v_ptr->tail(model_ptr->num_joint_dofs()); }

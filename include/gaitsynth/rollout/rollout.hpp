@@ -359,6 +359,7 @@ rollout_result rollout_impl(const model<Root>& m, const Actuator& act, C& ctrl,
   view.v_ptr = &s.v;
   view.tau_ptr = &scr.tau;
   view.tau_passive_ptr = &scr.tau_passive;
+  view.command_ptr = &scr.command;
   view.body_rotation = ws.body_rotation;
   view.body_position = ws.body_position;
   view.body_angular_velocity = ws.body_angular_velocity;
