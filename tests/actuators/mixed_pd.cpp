@@ -186,6 +186,9 @@ TEST_CASE("pose_hold in mixed mode drives mixed_pd_actuator as pd_actuator with 
 }
 
 TEST_CASE("pose_hold names the output kind it rejects", "[actuators][mixed][bad_input]") {
-  CHECK_THROWS_WITH(pose_hold(3, {.output = command_kind::excitation}),
-                    Catch::Contains("joint_target, joint_torque or mixed, got excitation"));
+  CHECK_THROWS_WITH(
+      pose_hold(3, {.output = static_cast<command_kind>(9)}),
+      Catch::Contains("joint_target, joint_torque, mixed or excitation, got unknown"));
+  CHECK_THROWS_WITH(pose_hold(3, {.output = command_kind::excitation, .excitation = 1.5}),
+                    Catch::Contains("excitation must be in [0, 1], got 1.5"));
 }

@@ -10,12 +10,13 @@
 
 #include "gaitsynth/actuators/musculotendon/leg_muscles.hpp"
 #include "gaitsynth/actuators/musculotendon_actuator.hpp"
+#include "gaitsynth/actuators/pd.hpp"
 #include "gaitsynth/contact/flat_terrain.hpp"
+#include "gaitsynth/controllers/pose_hold.hpp"
 #include "gaitsynth/integrators/semi_implicit_euler.hpp"
 #include "gaitsynth/models/wang2012.hpp"
 #include "gaitsynth/objectives/distance.hpp"
 #include "gaitsynth/rollout/rollout.hpp"
-#include "support/muscle_hold.hpp"
 
 using namespace gaitsynth;
 using Catch::Matchers::Contains;
@@ -31,7 +32,18 @@ static_assert(!actuator_with_continuous_state<musculotendon_actuator, floating_r
 
 namespace {
 constexpr double dt = 1.0 / 2400.0;
+
+/// Every MTU at excitation u, every joint DOF servoed to 0 with standing_pd's gains (pose_hold's
+/// excitation mode).
+pose_hold muscle_hold(const floating_model& m, int num_units, double u) {
+  const pd_actuator g = standing_pd(m, dt);
+  return pose_hold(m, {.output = command_kind::excitation,
+                       .kp = g.kp,
+                       .kd = g.kd,
+                       .num_excitations = num_units,
+                       .excitation = u});
 }
+}  // namespace
 
 TEST_CASE("the leg MTUs act on the sagittal hip, knee and ankle in the anatomical directions",
           "[actuators][musculotendon]") {
@@ -115,16 +127,19 @@ TEST_CASE("the muscle torques add to the mixed block's PD torques", "[actuators]
   act.start(m, s, st);
   const int nj = m.num_joint_dofs(), M = act.num_units();
   Eigen::VectorXd cmd = Eigen::VectorXd::Zero(act.command_size(m));
-  const auto hold = test_support::muscle_hold::standing(m, M, 0.3, dt);
+  const pd_actuator g = standing_pd(m, dt);
+  const auto hold = muscle_hold(m, M, 0.3);
   auto ctrl_state = hold.make_state(m);
   hold.command(sensors<floating_root>{}, ctrl_state, cmd);
+  CHECK(cmd.head(M).isConstant(0.3));
+  CHECK(hold.command_size(m) == act.command_size(m));
   Eigen::VectorXd tau(nj), muscles = Eigen::VectorXd::Zero(nj);
   act.torques(m, s, cmd, st, tau);
   for (int i = 0; i < M; ++i)
     act.units()[static_cast<std::size_t>(i)].add_torques(s.q.tail(nj), st.force[i], muscles);
   for (int j = 0; j < nj; ++j) {
     const double pd =
-        clamp_torque(pd_torque(hold.kp[j], hold.kd[j], 0.0, 0.1, -0.2), m.dofs[j].torque_limit);
+        clamp_torque(pd_torque(g.kp[j], g.kd[j], 0.0, 0.1, -0.2), m.dofs[j].torque_limit);
     INFO(m.dofs[j].name);
     CHECK_THAT(tau[j], WithinAbs(pd + muscles[j], 1e-9 * (1.0 + std::abs(tau[j]))));
   }
@@ -135,15 +150,15 @@ TEST_CASE("a muscle-driven rollout runs, advances the muscles and repeats bit fo
           "[actuators][musculotendon][rollout]") {
   const auto m = wang2012_humanoid();
   const musculotendon_actuator act(musculotendon::geyer_herr_leg_muscles(m));
-  const auto hold = test_support::muscle_hold::standing(m, act.num_units(), 0.2, dt);
+  const auto hold = muscle_hold(m, act.num_units(), 0.2);
   rollout_options opt;
   opt.duration = 0.3;
   auto scratch = make_rollout_scratch(m);
-  const std::vector<double> params{0.2};
+  const std::vector<double> params(static_cast<std::size_t>(m.num_joint_dofs()), 0.0);
   auto ctrl = hold;
   auto obj = distance_objective();
   semi_implicit_euler integ;
-  rollout_policy_states<musculotendon_actuator, test_support::muscle_hold, decltype(obj)> states;
+  rollout_policy_states<musculotendon_actuator, pose_hold, decltype(obj)> states;
   auto run = [&] {
     return rollout(m, act, ctrl, obj, flat_terrain(), integ, std::span<const double>(params), opt,
                    scratch, states);
@@ -157,6 +172,19 @@ TEST_CASE("a muscle-driven rollout runs, advances the muscles and repeats bit fo
   const auto& st = *states.actuator;
   CHECK_THAT(st.activation[0], WithinRel(0.2 - 0.19 * std::pow(1.0 - 100.0 * dt, 720), 1e-9));
   CHECK(st.fiber_velocity.allFinite());
+}
+
+TEST_CASE("a controller writing another number of excitations is refused at set-up",
+          "[actuators][musculotendon][bad_input]") {
+  const auto m = wang2012_humanoid();
+  const musculotendon_actuator act(musculotendon::geyer_herr_leg_muscles(m));
+  rollout_options opt;
+  opt.duration = 0.01;
+  auto scratch = make_rollout_scratch(m);
+  const Eigen::VectorXd pose = Eigen::VectorXd::Zero(m.num_joint_dofs());
+  CHECK_THROWS_WITH(rollout(m, act, muscle_hold(m, 14, 0.1), distance_objective(), flat_terrain(),
+                            semi_implicit_euler(), pose, opt, scratch),
+                    Contains("writes 134 command entries, the actuator takes 136"));
 }
 
 TEST_CASE("bad musculotendon input is refused naming the MTU and the value",

@@ -10,13 +10,14 @@
 
 #include "gaitsynth/actuators/musculotendon/leg_muscles.hpp"
 #include "gaitsynth/actuators/musculotendon_actuator.hpp"
+#include "gaitsynth/actuators/pd.hpp"
 #include "gaitsynth/contact/flat_terrain.hpp"
+#include "gaitsynth/controllers/pose_hold.hpp"
 #include "gaitsynth/integrators/semi_implicit_euler.hpp"
 #include "gaitsynth/models/wang2012.hpp"
 #include "gaitsynth/objectives/wang2012/effort_terms.hpp"
 #include "gaitsynth/objectives/wang2012/metabolic_energy.hpp"
 #include "gaitsynth/rollout/rollout.hpp"
-#include "support/muscle_hold.hpp"
 
 using namespace gaitsynth;
 using Catch::Matchers::Contains;
@@ -95,7 +96,12 @@ TEST_CASE("J_M, J_R, J_L and the ablations average what the rollout applied",
   const auto units = musculotendon::geyer_herr_leg_muscles(m);
   const musculotendon_actuator act(units);
   // Weak hold gains: the body sags, so the joint limits, the fibers and the torques all work.
-  const auto hold = test_support::muscle_hold::standing(m, act.num_units(), 0.3, dt, 0.2);
+  const pd_actuator g = standing_pd(m, dt, 0.2);
+  const pose_hold hold(m, {.output = command_kind::excitation,
+                           .kp = g.kp,
+                           .kd = g.kd,
+                           .num_excitations = act.num_units(),
+                           .excitation = 0.3});
   const wang2012::metabolic_energy jm(units);
   auto objective =
       weighted_sum<wang2012::metabolic_energy, wang2012::mean_squared_joint_torque,
@@ -112,7 +118,7 @@ TEST_CASE("J_M, J_R, J_L and the ablations average what the rollout applied",
   rollout_options opt;
   opt.duration = 0.5;
   auto scratch = make_rollout_scratch(m);
-  const std::vector<double> params{0.3};
+  const std::vector<double> params(static_cast<std::size_t>(m.num_joint_dofs()), 0.0);
   trajectory tr;
   opt.record = &tr;
   const rollout_result r = rollout(m, act, hold, objective, flat_terrain(), semi_implicit_euler(),

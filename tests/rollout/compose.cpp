@@ -7,6 +7,8 @@
 #include <tuple>
 
 #include "gaitsynth/actuators/mixed_pd.hpp"
+#include "gaitsynth/actuators/musculotendon/leg_muscles.hpp"
+#include "gaitsynth/actuators/musculotendon_actuator.hpp"
 #include "gaitsynth/actuators/pd.hpp"
 #include "gaitsynth/actuators/torque.hpp"
 #include "gaitsynth/contact/flat_terrain.hpp"
@@ -30,7 +32,8 @@ template <class... Ts>
 struct type_list {};
 
 using characters = type_list<planar_human7, humanoid3d>;
-using actuators = type_list<pd_actuator, torque_actuator, mixed_pd_actuator>;
+using actuators =
+    type_list<pd_actuator, torque_actuator, mixed_pd_actuator, musculotendon_actuator>;
 using controllers = type_list<pose_hold>;
 using objectives = type_list<decltype(distance_objective())>;
 using terrains = type_list<flat_terrain, slope_terrain>;
@@ -93,7 +96,7 @@ struct to_combinations<type_list<Tuples...>> {
 using all_combinations =
     typename to_combinations<typename product<characters, actuators, controllers, objectives,
                                               terrains, integrators>::type>::type;
-static_assert(std::tuple_size_v<all_combinations> == 2 * 3 * 1 * 1 * 2 * 2);
+static_assert(std::tuple_size_v<all_combinations> == 2 * 4 * 1 * 1 * 2 * 2);
 
 // ---- factories ----------------------------------------------------------------------------------
 template <class T>
@@ -108,6 +111,18 @@ struct make<pd_actuator> {
   template <class Model>
   static pd_actuator from(const Model& m) {
     return standing_pd(m, dt);
+  }
+};
+/// The 16 leg MTUs of Wang et al. 2012 on the 3D humanoid (its DOF names are the Wang 2012
+/// model's); the planar human has no such legs, so it gets none (the mixed block alone).
+template <>
+struct make<musculotendon_actuator> {
+  template <class Model>
+  static musculotendon_actuator from(const Model& m) {
+    if constexpr (std::is_same_v<typename Model::root_type, floating_root>)
+      return musculotendon_actuator(musculotendon::geyer_herr_leg_muscles(m));
+    else
+      return musculotendon_actuator({});
   }
 };
 template <>
@@ -136,6 +151,12 @@ struct make_controller<pose_hold> {
     // Torque actuation: the controller servos itself with the same gains; mixed actuation: it
     // sends those gains with its targets.
     const pd_actuator g = standing_pd(m, dt);
+    if constexpr (std::is_same_v<Actuator, musculotendon_actuator>)  // low tone in every MTU
+      return pose_hold(m, {.output = command_kind::excitation,
+                           .kp = g.kp,
+                           .kd = g.kd,
+                           .num_excitations = a.num_units(),
+                           .excitation = 0.05});
     const command_kind out =
         a.input_kind() == command_kind::mixed ? command_kind::mixed : command_kind::joint_torque;
     return pose_hold(m, {.output = out, .kp = g.kp, .kd = g.kd});

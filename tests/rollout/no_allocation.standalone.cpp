@@ -8,8 +8,6 @@
 
 #include <catch2/catch.hpp>
 
-#include <optional>
-
 #include "gaitsynth/actuators/mixed_pd.hpp"
 #include "gaitsynth/actuators/musculotendon/leg_muscles.hpp"
 #include "gaitsynth/actuators/musculotendon_actuator.hpp"
@@ -35,7 +33,6 @@
 #include "gaitsynth/rollout/problem.hpp"
 #include "gaitsynth/rollout/rollout.hpp"
 #include "gaitsynth/synthesis/nearest_neighbor_synthesis.hpp"
-#include "support/muscle_hold.hpp"
 #include "support/rollout_e2.hpp"
 
 using namespace gaitsynth;
@@ -102,18 +99,17 @@ struct delayed_reader {
   }
 };
 
-/// The step loop of one rollout allocates nothing. `inner`: the objective (distance by
-/// default); `p`: the controller's parameters (the standing pose by default).
+/// The step loop of one rollout (controller parameters: the standing pose) allocates nothing.
+/// `inner`: the objective (distance by default).
 template <class Model, class Actuator, class Controller, class Terrain, class Integrator,
           class Inner = decltype(distance_objective())>
 void require_no_allocation(const Model& m, const Actuator& act, Controller&& ctrl,
                            const Terrain& ground, Integrator&& integ, rollout_options opt,
-                           Inner inner = distance_objective(),
-                           std::optional<Eigen::VectorXd> params = std::nullopt) {
+                           Inner inner = distance_objective()) {
   auto scratch = make_rollout_scratch(m);
   region r;
   const counting_objective<Inner> obj{std::move(inner), &r};
-  const Eigen::VectorXd p = params ? *params : Eigen::VectorXd(standing_pose(m));
+  const Eigen::VectorXd p = standing_pose(m);
   const auto res = rollout(m, act, ctrl, obj, ground, integ, p, opt, scratch);
   Eigen::internal::set_is_malloc_allowed(true);
   INFO(m.name << ": " << to_string(res.reason) << " after " << res.steps << " steps");
@@ -226,11 +222,16 @@ TEST_CASE("no heap allocation in the step loop of a rollout", "[rollout][allocat
     const auto m = wang2012_humanoid();
     const auto units = musculotendon::geyer_herr_leg_muscles(m);
     const musculotendon_actuator act(units);
+    const pd_actuator g = standing_pd(m, dt);
     require_no_allocation(
-        m, act, test_support::muscle_hold::standing(m, act.num_units(), 0.2, dt), flat_terrain(),
-        semi_implicit_euler(), options_for(m, flat_terrain()),
-        wang2012::effort(m.total_mass(), units, wang2012::metabolic_energy(units)),
-        Eigen::VectorXd::Constant(1, 0.2));
+        m, act,
+        pose_hold(m, {.output = command_kind::excitation,
+                      .kp = g.kp,
+                      .kd = g.kd,
+                      .num_excitations = act.num_units(),
+                      .excitation = 0.2}),
+        flat_terrain(), semi_implicit_euler(), options_for(m, flat_terrain()),
+        wang2012::effort(m.total_mass(), units, wang2012::metabolic_energy(units)));
   }
   SECTION("7-link planar human with the recorder on") {
     const auto m = sharon2005_human7();

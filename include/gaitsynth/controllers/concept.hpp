@@ -27,6 +27,8 @@
 ///                                        (check_command_kinds, actuators/command_kind.hpp); at
 ///                                        compile time when it is static constexpr and the
 ///                                        actuator's input_kind() is too
+///   cc.command_size(m) -> int            how many entries it writes; the rollout refuses an
+///                                        actuator whose command_size differs (-1: any size)
 ///   cc.max_sensor_delay() -> double (s)  longest delay it reads through sensors::delayed_*
 ///   cc.initial_state(m, sim_state&)      overwrite the start state (start-state parameters,
 ///                                        Wang et al. 2009 Sec. 4 optimize it with the controller)
@@ -60,6 +62,11 @@ concept controller = root_joint<Root> && std::derived_from<S, sensors<Root>> &&
 
 // controller_with_output_kind (and its static form) is in actuators/command_kind.hpp, next to
 // check_command_kinds.
+template <class C, class Root>
+concept controller_with_command_size = requires(const C& c, const model<Root>& m) {
+  { c.command_size(m) } -> std::convertible_to<int>;
+};
+
 template <class C>
 concept controller_with_sensor_delay = requires(const C& c) {
   { c.max_sensor_delay() } -> std::convertible_to<double>;

@@ -251,6 +251,11 @@ rollout_result rollout_impl(const model<Root>& m, const Actuator& act, C& ctrl,
   typename Objective::accumulator_type& acc = *states.objective;
   const int ncmd = static_cast<int>(act.command_size(m));
   check_argument(ncmd >= 0, "actuator command_size must be >= 0, got ", ncmd);
+  if constexpr (controller_with_command_size<C, Root>) {
+    const int written = static_cast<int>(ctrl.command_size(m));
+    check_argument(written < 0 || written == ncmd, "the controller writes ", written,
+                   " command entries, the actuator takes ", ncmd);
+  }
   if (scr.command.size() != ncmd) scr.command.resize(ncmd);
   scr.command.setZero();
   scr.tau.setZero();
