@@ -187,6 +187,35 @@ TEST_CASE(
   CHECK(fiber_work_absorbed >= 0.0);
 }
 
+TEST_CASE(
+    "the analytic slope of the equilibrium velocity matches finite differences, and the "
+    "fiber step does not depend on its starting guess",
+    "[actuators][musculotendon]") {
+  for (const unit_parameters& p : {soleus, vasti}) {
+    const double lo = p.optimal_fiber_length, ls = p.tendon_slack_length;
+    int checked = 0;
+    for (double a : {0.0, 0.05, 0.5, 1.0})
+      for (double strain : {0.005, 0.02, 0.05})
+        for (double l : {0.5, 0.8, 0.97, 1.1, 1.3}) {
+          const double l_ce = l * lo, l_mtu = l_ce + ls * (1.0 + strain);
+          const auto vs = equilibrium_velocity_and_slope(p, a, l_mtu, l_ce);
+          const double e = 1e-7 * lo;
+          const double up = equilibrium_velocity(p, a, l_mtu, l_ce + e);
+          const double down = equilibrium_velocity(p, a, l_mtu, l_ce - e);
+          INFO("a " << a << ", strain " << strain << ", l " << l);
+          // The step from a poor guess (the velocity bound) ends where the warm start ends.
+          const double warm = advance_fiber(p, a, l_mtu, l_ce, h, vs.velocity);
+          const double cold = advance_fiber(p, a, l_mtu, l_ce, h, -p.max_shortening_velocity * lo);
+          CHECK_THAT(warm, WithinAbs(cold, 1e-11 * lo));
+          CHECK_THAT(warm, WithinAbs(advance_fiber(p, a, l_mtu, l_ce, h), 1e-11 * lo));
+          if (vs.slope == 0.0) continue;  // a guard clamps the ratio here: no slope to check
+          ++checked;
+          CHECK_THAT(vs.slope, WithinRel((up - down) / (2 * e), 1e-5));
+        }
+    CHECK(checked >= 12);  // of 60: the others ask more than the fiber can give (clamped)
+  }
+}
+
 TEST_CASE("a slack tendon and a collapsed fiber give finite, bounded velocities",
           "[actuators][musculotendon][bad_input]") {
   const unit_parameters& p = vasti;

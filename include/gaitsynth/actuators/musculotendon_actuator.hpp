@@ -171,7 +171,8 @@ class musculotendon_actuator {
       st.activation[i] = musculotendon::advance_activation(st.activation[i], cmd[i], h);
       const double l_mtu = u.length(qj);
       const double l_old = st.fiber_length[i];
-      st.fiber_length[i] = musculotendon::advance_fiber(p, st.activation[i], l_mtu, l_old, h);
+      st.fiber_length[i] =
+          musculotendon::advance_fiber(p, st.activation[i], l_mtu, l_old, h, st.fiber_velocity[i]);
       store(i, p, l_mtu, (st.fiber_length[i] - l_old) / h, st);
     }
   }

@@ -23,6 +23,7 @@
 /// velocity and in the isometric start alike. No function allocates.
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "gaitsynth/actuators/musculotendon/hill_curves.hpp"
 
@@ -61,36 +62,62 @@ inline element_forces forces_at(const unit_parameters& p, double l_mtu, double l
 /// force_velocity at 10 vmax: the largest ratio equilibrium_velocity inverts (see the guards).
 inline constexpr double max_velocity_ratio = force_velocity(10.0, 1.0);
 
+/// The equilibrium fiber velocity v (m/s) and its slope dv/dl_CE (1/s; 0 where a guard clamps).
+struct velocity_and_slope {
+  double velocity = 0.0;
+  double slope = 0.0;
+};
+
+/// v_CE (m/s, + lengthening) that balances the tendon at (l_mtu, l_ce) with activation a, with
+/// its derivative in l_ce (analytic: the Newton iteration of advance_fiber).
+inline velocity_and_slope equilibrium_velocity_and_slope(const unit_parameters& p, double a,
+                                                         double l_mtu, double l_ce) noexcept {
+  const double F = p.max_isometric_force, lo = p.optimal_fiber_length;
+  const double ls = p.tendon_slack_length, V = p.max_shortening_velocity;
+  const double l = l_ce / lo;
+  const double e = (l_mtu - l_ce - ls) / ls;
+  // What the CE must carry (F_SE - F_PE + F_BE) and what it can at this length and activation.
+  const double demand = F * (tendon_force(e) - parallel_force(l) + buffer_force(l));
+  const double a_ce = std::max(a, minimum_activation);
+  const double strength = a_ce * force_length(l);
+  const double capacity = F * std::max(strength, 1e-6);
+  const double ratio = demand / capacity;
+  if (!(ratio > 0.0)) return {lo * fiber_velocity(0.0, V), 0.0};
+  if (ratio >= max_velocity_ratio) return {lo * fiber_velocity(max_velocity_ratio, V), 0.0};
+  const double d_demand =
+      F * (-tendon_stiffness(e) / ls + (buffer_force_slope(l) - parallel_force_slope(l)) / lo);
+  const double d_capacity = strength > 1e-6 ? F * a_ce * force_length_slope(l) / lo : 0.0;
+  const double d_ratio = (d_demand * capacity - demand * d_capacity) / (capacity * capacity);
+  return {lo * fiber_velocity(ratio, V), lo * fiber_velocity_slope(ratio, V) * d_ratio};
+}
+
 /// v_CE (m/s, + lengthening) that balances the tendon at (l_mtu, l_ce) with activation a.
 inline double equilibrium_velocity(const unit_parameters& p, double a, double l_mtu,
                                    double l_ce) noexcept {
-  const element_forces f = forces_at(p, l_mtu, l_ce);
-  const double capacity =
-      p.max_isometric_force *
-      std::max(std::max(a, minimum_activation) * force_length(l_ce / p.optimal_fiber_length), 1e-6);
-  const double ratio = std::clamp(f.contractile() / capacity, 0.0, max_velocity_ratio);
-  return p.optimal_fiber_length * fiber_velocity(ratio, p.max_shortening_velocity);
+  return equilibrium_velocity_and_slope(p, a, l_mtu, l_ce).velocity;
 }
 
 /// The fiber length after one step h of the fiber at (a, l_mtu): the backward Euler step, the
-/// root of l_new = l_ce + h v(l_new), by Newton's method on the bracket [l_ce - h vmax l_opt,
-/// l_ce + 10 h vmax l_opt] that the velocity's bounds guarantee, halving the bracket whenever a
-/// Newton step leaves it (dv/dl by a forward difference of 1e-7 l_opt). Converges to 1e-12 l_opt,
-/// in 2-4 iterations when the fiber is near equilibrium; 60 at most.
-inline double advance_fiber(const unit_parameters& p, double a, double l_mtu, double l_ce,
-                            double h) noexcept {
+/// root of l_new = l_ce + h v(l_new), by Newton's method (analytic slope) on the bracket
+/// [l_ce - h vmax l_opt, l_ce + 10 h vmax l_opt] that the velocity's bounds guarantee, halving
+/// the bracket whenever a Newton step leaves it or the slope is not positive. It starts from
+/// l_ce + h v_guess (the last step's velocity: the fiber's velocity changes little per step), or
+/// from the explicit step when v_guess is not finite. Converges to 1e-12 l_opt, in 1-3
+/// iterations when the fiber is near equilibrium; 60 at most.
+inline double advance_fiber(const unit_parameters& p, double a, double l_mtu, double l_ce, double h,
+                            double v_guess = std::numeric_limits<double>::quiet_NaN()) noexcept {
   const double reach = h * p.max_shortening_velocity * p.optimal_fiber_length;
   double lo = l_ce - reach, hi = l_ce + 10.0 * reach;
   const double tol = 1e-12 * p.optimal_fiber_length;
-  const double dl = 1e-7 * p.optimal_fiber_length;
-  double x = std::clamp(l_ce + h * equilibrium_velocity(p, a, l_mtu, l_ce), lo, hi);
+  const double v0 = std::isfinite(v_guess) ? v_guess : equilibrium_velocity(p, a, l_mtu, l_ce);
+  double x = std::clamp(l_ce + h * v0, lo, hi);
   for (int it = 0; it < 60; ++it) {
-    const double vx = equilibrium_velocity(p, a, l_mtu, x);
-    const double r = x - l_ce - h * vx;  // increasing in x wherever v does not grow with l
+    const velocity_and_slope vs = equilibrium_velocity_and_slope(p, a, l_mtu, x);
+    const double r = x - l_ce - h * vs.velocity;  // increasing in x wherever v falls with l
     if (std::abs(r) <= tol) break;
     (r > 0.0 ? hi : lo) = x;
-    const double slope = 1.0 - h * (equilibrium_velocity(p, a, l_mtu, x + dl) - vx) / dl;
-    double next = x - r / slope;
+    const double slope = 1.0 - h * vs.slope;
+    double next = slope > 1e-3 ? x - r / slope : 0.5 * (lo + hi);
     if (!(next > lo && next < hi)) next = 0.5 * (lo + hi);
     x = next;
   }

@@ -13,6 +13,7 @@
 ///   tendon_force(e)        f_SE = (e / e_ref)^2 for tendon strain e > 0, else 0
 ///   parallel_force(l)      f_PE = ((l - 1) / w)^2 for l > 1, else 0
 ///   buffer_force(l)        f_BE = ((l_min - l) / (w / 2))^2 for l < l_min = 1 - w, else 0
+///   *_slope, tendon_stiffness   their derivatives (the fiber step's Newton iteration)
 ///
 /// with w = 0.56, c = ln 0.05, N = 1.5, K = 5, e_ref = 0.04 (Geyer & Herr 2010, Table I's shared
 /// values), and V = v_max in l_opt / s (6 for SOL, 12 for the others). The parallel element
@@ -40,6 +41,13 @@ inline double force_length(double l) noexcept {
   return std::exp(std::log(hill_constants::residual_force) * x * x * x);
 }
 
+/// d f_L / d l.
+inline double force_length_slope(double l) noexcept {
+  const double x = (l - 1.0) / hill_constants::width;
+  return force_length(l) * std::log(hill_constants::residual_force) * 3.0 * x * std::abs(x) /
+         hill_constants::width;
+}
+
 /// f_V(v): active force at normalized fiber velocity v (l_opt / s, + lengthening) for a muscle
 /// of maximum shortening velocity vmax (l_opt / s, > 0): 0 at v = -vmax, 1 at 0, rising toward
 /// N + (N - 1) / (7.56 K) when lengthening. Below -vmax it is negative (callers clamp v).
@@ -64,6 +72,15 @@ constexpr double fiber_velocity(double f, double vmax) noexcept {
   return vmax * (f - 1.0) / ((N - 1.0) - 7.56 * K * (f - N));
 }
 
+/// d v / d f of fiber_velocity (same domain).
+constexpr double fiber_velocity_slope(double f, double vmax) noexcept {
+  constexpr double N = hill_constants::eccentric_enhancement;
+  constexpr double K = hill_constants::shape_factor;
+  if (f < 1.0) return vmax * (1.0 + K) / ((1.0 + K * f) * (1.0 + K * f));
+  const double d = (N - 1.0) - 7.56 * K * (f - N);
+  return vmax * (d + 7.56 * K * (f - 1.0)) / (d * d);
+}
+
 /// f_SE(e): tendon force at strain e = (l_SE - l_slack) / l_slack (1 at e = e_ref).
 constexpr double tendon_force(double e) noexcept {
   if (e <= 0.0) return 0.0;
@@ -85,11 +102,24 @@ constexpr double parallel_force(double l) noexcept {
   return x * x;
 }
 
+/// d f_PE / d l.
+constexpr double parallel_force_slope(double l) noexcept {
+  if (l <= 1.0) return 0.0;
+  return 2.0 * (l - 1.0) / (hill_constants::width * hill_constants::width);
+}
+
 /// f_BE(l): the buffer element's force, pushing a fiber shorter than l_min back out.
 constexpr double buffer_force(double l) noexcept {
   if (l >= hill_constants::buffer_length) return 0.0;
   const double x = (hill_constants::buffer_length - l) / hill_constants::buffer_strain;
   return x * x;
+}
+
+/// d f_BE / d l (<= 0).
+constexpr double buffer_force_slope(double l) noexcept {
+  if (l >= hill_constants::buffer_length) return 0.0;
+  return -2.0 * (hill_constants::buffer_length - l) /
+         (hill_constants::buffer_strain * hill_constants::buffer_strain);
 }
 
 }  // namespace gaitsynth::musculotendon
