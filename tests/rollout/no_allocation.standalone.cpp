@@ -21,6 +21,7 @@
 #include "gaitsynth/controllers/fsm/wang2009_table2.hpp"
 #include "gaitsynth/controllers/nearest_neighbor_json.hpp"
 #include "gaitsynth/controllers/pose_hold.hpp"
+#include "gaitsynth/controllers/reflex/wang2012_reflex_controller.hpp"
 #include "gaitsynth/integrators/odeint.hpp"
 #include "gaitsynth/integrators/semi_implicit_euler.hpp"
 #include "gaitsynth/models/wang2012.hpp"
@@ -232,6 +233,24 @@ TEST_CASE("no heap allocation in the step loop of a rollout", "[rollout][allocat
                       .excitation = 0.2}),
         flat_terrain(), semi_implicit_euler(), options_for(m, flat_terrain()),
         wang2012::effort(m.total_mass(), units, wang2012::metabolic_energy(units)));
+  }
+  SECTION("3D humanoid, 16 MTUs driven by the reflex controller (delayed muscle sensors)") {
+    const auto m = wang2012_humanoid();
+    const auto units = musculotendon::geyer_herr_leg_muscles(m);
+    const musculotendon_actuator act(units);
+    const auto p = reflex::reflex_initial_parameters();
+    auto opt = options_for(m, flat_terrain());
+    opt.detect_falls = false;
+    auto scratch = make_rollout_scratch(m);
+    region r;
+    const counting_objective<decltype(distance_objective())> obj{distance_objective(), &r};
+    const Eigen::VectorXd params = Eigen::Map<const Eigen::VectorXd>(p.data(), p.size());
+    const auto res = rollout(m, act, wang2012_reflex_controller(m), obj, flat_terrain(),
+                             semi_implicit_euler(), params, opt, scratch);
+    Eigen::internal::set_is_malloc_allowed(true);
+    REQUIRE(res.reason == stop_reason::horizon);
+    CHECK(r.news_at_end - r.news_at_start == 0);
+    CHECK(r.eigen_at_end - r.eigen_at_start == 0);
   }
   SECTION("7-link planar human with the recorder on") {
     const auto m = sharon2005_human7();

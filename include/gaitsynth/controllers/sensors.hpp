@@ -18,7 +18,7 @@
 ///     physics step (controllers/sensor_history.hpp). A controller that needs them declares
 ///     `double max_sensor_delay() const` (s); the rollout then sizes the buffer at set-up. Before
 ///     enough history exists, the oldest sample (the initial state) is returned, as if the
-///     character had been still before t0;
+///     character had been still before t0, touching the ground where it touches at t0;
 ///   - read-only views of what the rollout already computed this step: the dynamics workspace
 ///     (every body's pose and velocity, the spatial scratch) and the contact state (per-point
 ///     positions, depths, normals and forces), so a controller never recomputes them.

@@ -334,6 +334,16 @@ rollout_result rollout_impl(const model<Root>& m, const Actuator& act, C& ctrl,
                 std::span<double>(scr.sensed.data(), static_cast<std::size_t>(num_sensed)));
   };
   if (scr.history.capacity() > 0) {  // as if the character had been still before t0
+    // ...and standing where it stands at t0: the history's contact counts are the start pose's
+    // points within 1 mm of the terrain (a start placed on the terrain touches with depth 0,
+    // which the contact model does not count), so a delayed contact sensor sees a foot placed on
+    // the ground as on the ground. Counts only: step 0 evaluates the contact anew.
+    detail::reset_counts(scr.contacts);
+    for (int k = 0; k < static_cast<int>(m.contact_points.size()); ++k) {
+      const contact_point& cp = m.contact_points[static_cast<std::size_t>(k)];
+      const vec3 p = ws.body_position[cp.body] + ws.body_rotation[cp.body] * cp.position;
+      detail::record_point(cp, k, p - vec3(0.0, 0.0, 1e-3), ground, scr.contacts);
+    }
     sense_actuator();
     sample.com = res.com_initial;
     sample.com_velocity = com_velocity(m, ws);

@@ -1,0 +1,242 @@
+#pragma once
+/// \file controllers/reflex/wang2012_reflex_controller.hpp
+/// The muscle-reflex controller of Wang et al. 2012 Sec. 4.1-4.3 for the 16 leg MTUs of
+/// musculotendon::geyer_herr_leg_muscles (in that order: per leg GLU, HFL, VAS, TA, SOL, HAM, RF,
+/// GAS; left first), with its parameters in reflex_parameters.hpp. Per leg, per physics step:
+///
+///   stance   u_SOL = p + G_SOL F_SOL          u_TA  = p + u^L_TA - G_SOL_TA F_SOL
+///            u_GAS = p + G_GAS F_GAS          u_VAS = p + G_VAS F_VAS + {k (th_k -
+///            th_off)}-,thd_k<0 u_HAM = p + {u^Theta_HAM}lead    u_RF  = p u_GLU = p +
+///            {u^Theta_GLU}lead    u_HFL = p + {u^Theta_HFL}lead
+///     swing initiation: u_VAS -= s_VAS, u_RF += s_RF, u_GLU -= s_GLU, u_HFL += s_HFL
+///   swing    u_TA = q + u^L_TA, u_HAM = q + u^L_HAM, u_GLU = q + u^L_GLU,
+///            u_HFL = q + u^L_HFL - u^L_HAM + k_lean (Theta_lto - Theta_d), others q
+///     stance preparation: u_VAS = q + u^th_k, u_GLU = q + u^th_h, u_HFL = q + u^th_h with the
+///     shared hip target th_h = hip_target + c_d d + c_v v (SIMBICON balance feedback: d, v the
+///     COM's horizontal offset from the stance ankle and its velocity along the heading)
+///
+/// with the neural delays of reflex_delays (ankle MTUs 20 ms, VAS and contact 10 ms, hip MTUs
+/// 5 ms). F and l are the actuator's sensed F_MTU / F_max and l_CE / l_opt (musculotendon_actuator
+/// ::sense); th_k the knee flexion, th_h the hip flexion (-hip_y); Theta the trunk's lean, the
+/// sagittal world angle of the torso (5 ms delay; ours: the paper's upper-body-to-pelvis COM
+/// vector is not in the delayed sensor history), its rate by a difference of two delayed samples.
+/// "lead": in double stance only the leading leg (ankle further ahead) holds the trunk.
+///
+/// The DOFs the muscles do not drive get the simplest form of Sec. 4.4 for now (ours, not yet
+/// optimized): PD servos to 0 with fixed gains (options), the toes the 30 N m/rad spring and the
+/// arms the 30 N m/rad, 3 N m s/rad spring-dampers of models/wang2012.hpp. The world-frame
+/// targets, coronal balance feedback and arm coupling of Sec. 4.4, the start-state parameters and
+/// an optimized walker come next (docs/reproductions/wang2012.md).
+#include <Eigen/Core>
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <span>
+
+#include "gaitsynth/actuators/command_kind.hpp"
+#include "gaitsynth/controllers/concept.hpp"
+#include "gaitsynth/controllers/fsm/biped_layout.hpp"
+#include "gaitsynth/controllers/reflex/leg_phase.hpp"
+#include "gaitsynth/controllers/reflex/reflex_laws.hpp"
+#include "gaitsynth/controllers/reflex/reflex_parameters.hpp"
+#include "gaitsynth/controllers/sensors.hpp"
+#include "gaitsynth/error.hpp"
+#include "gaitsynth/models/wang2012.hpp"
+#include "gaitsynth/spatial/world_angles.hpp"
+
+namespace gaitsynth {
+
+struct wang2012_reflex_options {
+  double leg_length = 0.0;  ///< m, normalizes d; 0: hip-to-ankle length of the model at q = 0
+  double servo_kp = 300.0;  ///< N m / rad: the non-muscle leg, back and neck DOFs (ours)
+  double servo_kd = 30.0;   ///< N m s / rad
+};
+
+class wang2012_reflex_controller {
+ public:
+  static constexpr int num_muscles = 16;  ///< 8 per leg, geyer_herr_leg_muscles order
+  using options = wang2012_reflex_options;
+
+  struct state_type {
+    std::array<reflex::leg_state, 2> legs;
+    std::array<double, 2> lean_at_liftoff{};  ///< Theta when each leg last lifted off, rad
+    std::int64_t commands = 0;
+  };
+
+  explicit wang2012_reflex_controller(const floating_model& m, options o = {})
+      : opt_(o), layout_(biped_layout::of(m)), params_(reflex::reflex_initial_parameters()) {
+    if (opt_.leg_length <= 0.0) {
+      // Hip to ankle at q = 0: the thigh's and shin's joint offsets (models/detail/humanoid30).
+      opt_.leg_length =
+          m.bodies[static_cast<std::size_t>(layout_.leg[0].shin)].joint_offset.norm() +
+          m.bodies[static_cast<std::size_t>(layout_.leg[0].foot)].joint_offset.norm();
+    }
+    check_positive(opt_.leg_length, "wang2012_reflex_controller: leg_length (m)");
+    check_argument(std::isfinite(opt_.servo_kp) && opt_.servo_kp >= 0 &&
+                       std::isfinite(opt_.servo_kd) && opt_.servo_kd >= 0,
+                   "wang2012_reflex_controller: servo gains must be finite and >= 0, got ",
+                   opt_.servo_kp, ", ", opt_.servo_kd);
+  }
+
+  std::size_t num_parameters() const { return reflex::reflex_parameter_count; }
+  void bind(std::span<const double> p) { params_ = reflex::reflex_parameters_from(p); }
+  const reflex::reflex_parameter_vector& parameters() const { return params_; }
+  double leg_length() const { return opt_.leg_length; }
+
+  double period() const { return 0.0; }
+  double max_sensor_delay() const { return reflex::reflex_delays::ankle + 1.0 / 2400.0; }
+  static constexpr command_kind output_kind() { return command_kind::excitation; }
+  template <root_joint Root>
+  int command_size(const model<Root>& m) const {
+    return num_muscles + 4 * m.num_joint_dofs();
+  }
+
+  template <root_joint Root>
+  state_type make_state(const model<Root>&) const {
+    return {};
+  }
+  /// 4 x left phase + right phase (reflex::leg_phase values), for the recorder.
+  int discrete_state(const state_type& st) const {
+    return 4 * static_cast<int>(st.legs[0].phase) + static_cast<int>(st.legs[1].phase);
+  }
+
+  template <root_joint Root>
+  void command(const sensors<Root>& s, state_type& st, Eigen::Ref<Eigen::VectorXd> cmd) const {
+    using namespace reflex;
+    const auto& P = params_;
+    const int nj = s.num_joint_dofs();
+    ++st.commands;
+    // Heading, trunk lean and the legs' d (COM ahead of the ankle, over the leg length).
+    const double heading = body_heading(s.body_rotation[layout_.pelvis]);
+    const vec3 fwd(std::cos(heading), std::sin(heading), 0.0);
+    const double lean = trunk_lean(s, reflex_delays::hip, heading);
+    const double lean_rate =
+        s.dt > 0.0 ? (lean - trunk_lean(s, reflex_delays::hip + s.dt, heading)) / s.dt : 0.0;
+    std::array<double, 2> d{}, ankle_x{};
+    std::array<bool, 2> contact{};
+    for (int k = 0; k < 2; ++k) {
+      const biped_leg& g = layout_.leg[k];
+      ankle_x[k] = s.body_position[g.foot].dot(fwd);
+      d[k] = (s.com.dot(fwd) - ankle_x[k]) / opt_.leg_length;
+      contact[k] = s.delayed_contact_count(g.foot, reflex_delays::contact) +
+                       s.delayed_contact_count(g.toes, reflex_delays::contact) >
+                   0;
+    }
+    for (int k = 0; k < 2; ++k) {
+      const leg_phase before = st.legs[k].phase;
+      st.legs[k].update(contact[k], st.legs[1 - k], d[k], P[d_SI], P[d_SP], s.t);
+      if (in_stance(before) && !in_stance(st.legs[k].phase)) st.lean_at_liftoff[k] = lean;
+    }
+    const bool double_stance = in_stance(st.legs[0].phase) && in_stance(st.legs[1].phase);
+    const int lead = ankle_x[0] >= ankle_x[1] ? 0 : 1;
+    // The stance leg's offset and the COM velocity for the swing hip's balance feedback (m, m/s).
+    const int stance_leg = in_stance(st.legs[0].phase) ? 0 : 1;
+    const double balance =
+        P[c_d] * d[stance_leg] * opt_.leg_length + P[c_v] * s.com_velocity.dot(fwd);
+
+    const auto F_ankle = s.delayed_sensed(reflex_delays::ankle);
+    const auto F_knee = s.delayed_sensed(reflex_delays::knee);
+    const auto F_hip = s.delayed_sensed(reflex_delays::hip);
+    const auto v_knee = s.delayed_v(reflex_delays::knee);
+    const auto q_knee = s.delayed_q(reflex_delays::knee);
+    const auto v_hip = s.delayed_v(reflex_delays::hip);
+    const auto q_hip = s.delayed_q(reflex_delays::hip);
+    auto force = [&](const auto& sensed, int i) { return sensed[i]; };
+    auto length = [&](const auto& sensed, int i) { return sensed[num_muscles + i]; };
+
+    for (int k = 0; k < 2; ++k) {
+      const biped_leg& g = layout_.leg[k];
+      const int b = 8 * k;  // this leg's MTUs: GLU, HFL, VAS, TA, SOL, HAM, RF, GAS
+      const int GLU = b, HFL = b + 1, VAS = b + 2, TA = b + 3, SOL = b + 4, HAM = b + 5, RF = b + 6,
+                GAS = b + 7;
+      const double knee = q_knee[Root::nq + g.knee], knee_rate = v_knee[Root::nv + g.knee];
+      const double hip_flex = -q_hip[Root::nq + g.hip_y], hip_rate = -v_hip[Root::nv + g.hip_y];
+      const leg_phase ph = st.legs[k].phase;
+      auto out = cmd.segment(b, 8);
+      if (in_stance(ph)) {
+        const double sol_f = force(F_ankle, SOL);
+        out[4] = P[p_SOL] + force_feedback(P[G_SOL], sol_f);
+        out[3] = P[p_TA] + length_feedback(P[G_TA], length(F_ankle, TA), P[H_TA]) -
+                 force_feedback(P[G_SOL_TA], sol_f);
+        out[7] = P[p_GAS] + force_feedback(P[G_GAS], force(F_ankle, GAS));
+        out[2] = P[p_VAS] + force_feedback(P[G_VAS], force(F_knee, VAS)) +
+                 knee_extension_suppression(P[k_knee], knee, knee_rate, P[knee_offset]);
+        out[6] = P[p_RF];
+        const bool holds_trunk = !double_stance || lead == k;
+        out[5] = P[p_HAM] + (holds_trunk ? muscle_pd(P[K_HAM_lean], P[D_HAM_lean], lean, lean_rate,
+                                                     P[lean_HAM], true)
+                                         : 0.0);
+        out[0] = P[p_GLU] + (holds_trunk ? muscle_pd(P[K_GLU_lean], P[D_GLU_lean], lean, lean_rate,
+                                                     P[lean_GLU], true)
+                                         : 0.0);
+        out[1] = P[p_HFL] + (holds_trunk ? muscle_pd(P[K_HFL_lean], P[D_HFL_lean], lean, lean_rate,
+                                                     P[lean_HFL], false)
+                                         : 0.0);
+        if (ph == leg_phase::swing_initiation) {
+          out[2] -= P[s_VAS];
+          out[6] += P[s_RF];
+          out[0] -= P[s_GLU];
+          out[1] += P[s_HFL];
+        }
+      } else {
+        const double ham_l = length_feedback(P[G_HAM_swing], length(F_hip, HAM), P[H_HAM_swing]);
+        out[3] = P[q_TA] + length_feedback(P[G_TA_swing], length(F_ankle, TA), P[H_TA_swing]);
+        out[5] = P[q_HAM] + ham_l;
+        out[4] = P[q_SOL];
+        out[7] = P[q_GAS];
+        out[6] = P[q_RF];
+        if (ph == leg_phase::stance_preparation) {
+          const double target = P[hip_target] + balance;
+          out[2] = P[q_VAS] +
+                   muscle_pd(P[K_VAS_knee], P[D_VAS_knee], knee, knee_rate, P[knee_target], true);
+          out[0] =
+              P[q_GLU] + muscle_pd(P[K_GLU_hip], P[D_GLU_hip], hip_flex, hip_rate, target, true);
+          out[1] =
+              P[q_HFL] + muscle_pd(P[K_HFL_hip], P[D_HFL_hip], hip_flex, hip_rate, target, false);
+        } else {
+          out[2] = P[q_VAS];
+          out[0] = P[q_GLU] + length_feedback(P[G_GLU_swing], length(F_hip, GLU), P[H_GLU_swing]);
+          out[1] = P[q_HFL] + length_feedback(P[G_HFL_swing], length(F_hip, HFL), P[H_HFL_swing]) -
+                   ham_l + P[k_lean] * (st.lean_at_liftoff[k] - P[lean_HFL]);
+        }
+      }
+      (void)RF;
+    }
+    write_servos(nj, cmd);
+  }
+
+ private:
+  /// The torso's sagittal world angle `delay` ago (rad, + leaning forward).
+  template <root_joint Root>
+  double trunk_lean(const sensors<Root>& s, double delay, double heading) const {
+    return body_world_angles(s.delayed_body_rotation(layout_.torso, delay), heading).sagittal;
+  }
+
+  /// The mixed block: muscle DOFs limp (their torque is the muscles'), toes and arms the passive
+  /// springs of Sec. 4.3-4.4, every other DOF a PD servo to 0 (ours, file comment).
+  void write_servos(int nj, Eigen::Ref<Eigen::VectorXd> cmd) const {
+    auto target = cmd.segment(num_muscles, nj);
+    auto kp = cmd.segment(num_muscles + nj, nj);
+    auto kd = cmd.segment(num_muscles + 2 * nj, nj);
+    cmd.segment(num_muscles + 3 * nj, nj).setZero();
+    target.setZero();
+    kp.setConstant(opt_.servo_kp);
+    kd.setConstant(opt_.servo_kd);
+    for (const biped_leg& g : layout_.leg) {
+      for (int j : {g.hip_y, g.knee, g.ankle_y}) kp[j] = kd[j] = 0.0;
+      kp[g.toe] = wang2012_passive::toe_stiffness;
+      kd[g.toe] = 0.0;
+    }
+    for (const biped_arm& a : layout_.arm)
+      for (int j : {a.shoulder_x, a.shoulder_y, a.shoulder_z, a.elbow_y, a.elbow_z}) {
+        kp[j] = wang2012_passive::arm_stiffness;
+        kd[j] = wang2012_passive::arm_damping;
+      }
+  }
+
+  options opt_;
+  biped_layout layout_;
+  reflex::reflex_parameter_vector params_;
+};
+
+}  // namespace gaitsynth
