@@ -290,6 +290,17 @@ TEST_CASE("bad inputs: a failed load_checkpoint leaves the optimizer as it was",
     CHECK_THROWS_WITH(load_checkpoint(r2, dir / "restarts_cut.ckpt"),
                       Catch::Contains("restarts_cut.ckpt") && Catch::Contains("'candidates'"));
     CHECK(state_of(r2) == before_r);
+    // A corrupt count of finished runs fails as a short file, at the first run record missing,
+    // before anything is allocated for it (tests/fuzz/checkpoint.fuzz.cpp found 6296478855 run
+    // records allocated first: std::bad_alloc, or AddressSanitizer's out-of-memory abort).
+    const auto runs_at = text.find("\nfinished_runs ") + 15;
+    std::ofstream(dir / "restarts_runs.ckpt")
+        << text.substr(0, runs_at) << "6296478855" << text.substr(text.find('\n', runs_at));
+    CHECK_THROWS_WITH(load_checkpoint(r2, dir / "restarts_runs.ckpt"),
+                      Catch::Contains("restarts_runs.ckpt") &&
+                          Catch::Contains("'finished_run_lambda'") &&
+                          !Catch::Contains("bad_alloc"));
+    CHECK(state_of(r2) == before_r);
     load_checkpoint(r2, dir / "restarts.ckpt");
     CHECK(state_of(r2) == state_of(r));
   }

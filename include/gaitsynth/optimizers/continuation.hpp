@@ -62,12 +62,15 @@ inline void write_stage_results(const std::filesystem::path& path,
 inline std::vector<optimization_result> read_stage_results(const std::filesystem::path& path) {
   std::ifstream is(path);
   if (!is) throw std::runtime_error("cannot read '" + path.string() + "'");
-  checkpoint_reader r(is);
+  checkpoint_reader r(is, path.string());
   r.require_text("magic", checkpoint_magic);
   r.require_text("optimizer", "continuation");
   const auto n = r.integer("stages_done");
-  std::vector<optimization_result> rs(static_cast<std::size_t>(n));
-  for (auto& res : rs) {
+  if (n < 0) r.error("expected a non-negative count of stages, got " + std::to_string(n));
+  // One stage at a time: a corrupt count fails as a short file rather than allocating first.
+  std::vector<optimization_result> rs;
+  for (std::int64_t k = 0; k < n; ++k) {
+    optimization_result& res = rs.emplace_back();
     res.x = r.vector("x");
     res.value = r.real("value");
     res.stopped = static_cast<stop_criterion>(r.integer("stopped"));

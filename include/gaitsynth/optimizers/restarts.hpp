@@ -194,8 +194,10 @@ class cmaes_restarts {
     last_run_criterion_ = static_cast<stop_criterion>(r.integer("last_run_criterion"));
     const std::int64_t num_finished = r.integer("finished_runs");
     if (num_finished < 0) throw std::runtime_error("checkpoint: 'finished_runs' is negative");
-    finished_runs_.assign(static_cast<std::size_t>(num_finished), run_record{});
-    for (run_record& f : finished_runs_) {
+    // One record at a time: a corrupt count fails as a short file rather than allocating first.
+    finished_runs_.clear();
+    for (std::int64_t k = 0; k < num_finished; ++k) {
+      run_record& f = finished_runs_.emplace_back();
       f.population_size = static_cast<int>(r.integer("finished_run_lambda"));
       f.sigma0 = r.real("finished_run_sigma0");
       f.small_population = r.integer("finished_run_small") != 0;
