@@ -296,8 +296,8 @@ TEST_CASE("every saved walker also walks from at least 8 of 10 perturbed starts"
                                        flat_terrain{}, log));
   }
   SECTION("Fig. 6c back swing") {
-    check("back swing", perturbed_walks(m7, "backswing.controller.json",
-                                        "backswing.keyframes.json", flat_terrain{}, log));
+    check("back swing", perturbed_walks(m7, "backswing.controller.json", "backswing.keyframes.json",
+                                        flat_terrain{}, log));
   }
   SECTION("Fig. 7 uphill") {
     check("uphill", perturbed_walks(m7, "uphill.controller.json", "uphill.keyframes.json",
@@ -306,14 +306,16 @@ TEST_CASE("every saved walker also walks from at least 8 of 10 perturbed starts"
   SECTION("Fig. 8a-c changed bodies") {
     for (int i = 0; i < 3; ++i) {
       const planar_model mb = sharon2005_human7(sharon_scenarios::figure8_bodies()[i].params);
-      check(i == 0 ? "Fig. 8a" : i == 1 ? "Fig. 8b" : "Fig. 8c",
+      check(i == 0   ? "Fig. 8a"
+            : i == 1 ? "Fig. 8b"
+                     : "Fig. 8c",
             perturbed_walks(mb, "normal_walk.controller.json", "normal_walk.keyframes.json",
                             flat_terrain{}, log, &nominal, true));
     }
   }
   SECTION("Fig. 8d bumpy terrain") {
-    check("Fig. 8d", perturbed_walks(m7, "normal_walk.controller.json",
-                                     "normal_walk.keyframes.json", sharon_scenarios::bumpy_terrain(),
-                                     log, nullptr, true));
+    check("Fig. 8d",
+          perturbed_walks(m7, "normal_walk.controller.json", "normal_walk.keyframes.json",
+                          sharon_scenarios::bumpy_terrain(), log, nullptr, true));
   }
 }
