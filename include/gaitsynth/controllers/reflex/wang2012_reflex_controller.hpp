@@ -152,55 +152,54 @@ class wang2012_reflex_controller {
       const double knee = q_knee[Root::nq + g.knee], knee_rate = v_knee[Root::nv + g.knee];
       const double hip_flex = -q_hip[Root::nq + g.hip_y], hip_rate = -v_hip[Root::nv + g.hip_y];
       const leg_phase ph = st.legs[k].phase;
-      auto out = cmd.segment(b, 8);
       if (in_stance(ph)) {
         const double sol_f = force(F_ankle, SOL);
-        out[4] = P[p_SOL] + force_feedback(P[G_SOL], sol_f);
-        out[3] = P[p_TA] + length_feedback(P[G_TA], length(F_ankle, TA), P[H_TA]) -
-                 force_feedback(P[G_SOL_TA], sol_f);
-        out[7] = P[p_GAS] + force_feedback(P[G_GAS], force(F_ankle, GAS));
-        out[2] = P[p_VAS] + force_feedback(P[G_VAS], force(F_knee, VAS)) +
-                 knee_extension_suppression(P[k_knee], knee, knee_rate, P[knee_offset]);
-        out[6] = P[p_RF];
+        cmd[SOL] = P[p_SOL] + force_feedback(P[G_SOL], sol_f);
+        cmd[TA] = P[p_TA] + length_feedback(P[G_TA], length(F_ankle, TA), P[H_TA]) -
+                  force_feedback(P[G_SOL_TA], sol_f);
+        cmd[GAS] = P[p_GAS] + force_feedback(P[G_GAS], force(F_ankle, GAS));
+        cmd[VAS] = P[p_VAS] + force_feedback(P[G_VAS], force(F_knee, VAS)) +
+                   knee_extension_suppression(P[k_knee], knee, knee_rate, P[knee_offset]);
+        cmd[RF] = P[p_RF];
         const bool holds_trunk = !double_stance || lead == k;
-        out[5] = P[p_HAM] + (holds_trunk ? muscle_pd(P[K_HAM_lean], P[D_HAM_lean], lean, lean_rate,
-                                                     P[lean_HAM], true)
-                                         : 0.0);
-        out[0] = P[p_GLU] + (holds_trunk ? muscle_pd(P[K_GLU_lean], P[D_GLU_lean], lean, lean_rate,
-                                                     P[lean_GLU], true)
-                                         : 0.0);
-        out[1] = P[p_HFL] + (holds_trunk ? muscle_pd(P[K_HFL_lean], P[D_HFL_lean], lean, lean_rate,
-                                                     P[lean_HFL], false)
-                                         : 0.0);
+        cmd[HAM] = P[p_HAM] + (holds_trunk ? muscle_pd(P[K_HAM_lean], P[D_HAM_lean], lean,
+                                                       lean_rate, P[lean_HAM], true)
+                                           : 0.0);
+        cmd[GLU] = P[p_GLU] + (holds_trunk ? muscle_pd(P[K_GLU_lean], P[D_GLU_lean], lean,
+                                                       lean_rate, P[lean_GLU], true)
+                                           : 0.0);
+        cmd[HFL] = P[p_HFL] + (holds_trunk ? muscle_pd(P[K_HFL_lean], P[D_HFL_lean], lean,
+                                                       lean_rate, P[lean_HFL], false)
+                                           : 0.0);
         if (ph == leg_phase::swing_initiation) {
-          out[2] -= P[s_VAS];
-          out[6] += P[s_RF];
-          out[0] -= P[s_GLU];
-          out[1] += P[s_HFL];
+          cmd[VAS] -= P[s_VAS];
+          cmd[RF] += P[s_RF];
+          cmd[GLU] -= P[s_GLU];
+          cmd[HFL] += P[s_HFL];
         }
       } else {
         const double ham_l = length_feedback(P[G_HAM_swing], length(F_hip, HAM), P[H_HAM_swing]);
-        out[3] = P[q_TA] + length_feedback(P[G_TA_swing], length(F_ankle, TA), P[H_TA_swing]);
-        out[5] = P[q_HAM] + ham_l;
-        out[4] = P[q_SOL];
-        out[7] = P[q_GAS];
-        out[6] = P[q_RF];
+        cmd[TA] = P[q_TA] + length_feedback(P[G_TA_swing], length(F_ankle, TA), P[H_TA_swing]);
+        cmd[HAM] = P[q_HAM] + ham_l;
+        cmd[SOL] = P[q_SOL];
+        cmd[GAS] = P[q_GAS];
+        cmd[RF] = P[q_RF];
         if (ph == leg_phase::stance_preparation) {
           const double target = P[hip_target] + balance;
-          out[2] = P[q_VAS] +
-                   muscle_pd(P[K_VAS_knee], P[D_VAS_knee], knee, knee_rate, P[knee_target], true);
-          out[0] =
+          cmd[VAS] = P[q_VAS] +
+                     muscle_pd(P[K_VAS_knee], P[D_VAS_knee], knee, knee_rate, P[knee_target], true);
+          cmd[GLU] =
               P[q_GLU] + muscle_pd(P[K_GLU_hip], P[D_GLU_hip], hip_flex, hip_rate, target, true);
-          out[1] =
+          cmd[HFL] =
               P[q_HFL] + muscle_pd(P[K_HFL_hip], P[D_HFL_hip], hip_flex, hip_rate, target, false);
         } else {
-          out[2] = P[q_VAS];
-          out[0] = P[q_GLU] + length_feedback(P[G_GLU_swing], length(F_hip, GLU), P[H_GLU_swing]);
-          out[1] = P[q_HFL] + length_feedback(P[G_HFL_swing], length(F_hip, HFL), P[H_HFL_swing]) -
-                   ham_l + P[k_lean] * (st.lean_at_liftoff[k] - P[lean_HFL]);
+          cmd[VAS] = P[q_VAS];
+          cmd[GLU] = P[q_GLU] + length_feedback(P[G_GLU_swing], length(F_hip, GLU), P[H_GLU_swing]);
+          cmd[HFL] = P[q_HFL] +
+                     length_feedback(P[G_HFL_swing], length(F_hip, HFL), P[H_HFL_swing]) - ham_l +
+                     P[k_lean] * (st.lean_at_liftoff[k] - P[lean_HFL]);
         }
       }
-      (void)RF;
     }
     write_servos(nj, cmd);
   }
