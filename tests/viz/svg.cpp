@@ -234,3 +234,14 @@ TEST_CASE("convergence log: columns found by name in any order", "[viz][svg]") {
   save_convergence_plot_svg(path, out_dir() + "/convergence.svg");
   CHECK(std::filesystem::file_size(out_dir() + "/convergence.svg") > 500);
 }
+
+TEST_CASE("nice_ticks ends on ranges below the values' resolution (found by fuzzing)",
+          "[viz][svg][bad_input]") {
+  // A range of 2 at 1.3e16: the step is below one ulp of the values, so stepping never advanced.
+  const auto t = gaitsynth::viz_detail::nice_ticks(13115550548573230.0, 13115550548573232.0);
+  CHECK(t.size() <= 1000);
+  const auto u = gaitsynth::viz_detail::nice_ticks(0.0, 10.0);
+  REQUIRE(u.size() == 6);
+  CHECK(u.front() == 0.0);
+  CHECK(u.back() == 10.0);
+}

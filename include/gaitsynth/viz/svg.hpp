@@ -109,8 +109,14 @@ inline std::vector<double> nice_ticks(double lo, double hi, int target = 5) {
       break;
     }
   const double first = std::ceil(lo / step - 1e-9) * step;
-  for (double v = first; v <= hi + 1e-9 * step; v += step)
+  // Counted, not stepped: when the step is below the values' resolution (a range of 2 at 1e16),
+  // v += step would never advance.
+  const double count = std::floor((hi - first) / step + 1e-9) + 1.0;
+  if (!(count >= 1.0 && count <= 1000.0)) return t;
+  for (int i = 0; i < static_cast<int>(count); ++i) {
+    const double v = first + i * step;
     t.push_back(std::abs(v) < 1e-12 * step ? 0.0 : v);
+  }
   return t;
 }
 
