@@ -68,14 +68,14 @@ for t in "${targets[@]}"; do
     -artifact_prefix="artifacts/$t/" "corpus/$t" "seeds/$t") >"$out/$t.log" 2>&1
   rc=$?
   set -e
-  line=$(grep -E '^#[0-9]+\s+DONE' "$out/$t.log" | tail -1 || true)
-  execs=$(grep -E 'stat::number_of_executed_units' "$out/$t.log" | awk '{print $2}' || true)
-  speed=$(grep -E 'stat::average_exec_per_sec' "$out/$t.log" | awk '{print $2}' || true)
+  line=$(grep -a -E '^#[0-9]+\s+DONE' "$out/$t.log" | tail -1 || true)
+  execs=$(grep -a -E 'stat::number_of_executed_units' "$out/$t.log" | awk '{print $2}' || true)
+  speed=$(grep -a -E 'stat::average_exec_per_sec' "$out/$t.log" | awk '{print $2}' || true)
   if ((rc == 0)); then
     summary="$t: ok, ${execs:-?} executions (of $runs), ${speed:-?} exec/s, ${line:-no DONE line}"
   else
     status=1
-    summary="$t: FAILED (exit $rc), see $out/$t.log and $out/artifacts/$t/: $(grep -m1 -E 'ERROR|SUMMARY|undocumented' "$out/$t.log" || true)"
+    summary="$t: FAILED (exit $rc), see $out/$t.log and $out/artifacts/$t/: $(grep -a -m1 -E 'ERROR|SUMMARY|undocumented' "$out/$t.log" || true)"
   fi
   echo "$summary" | tee -a "$out/summary.txt"
 done
