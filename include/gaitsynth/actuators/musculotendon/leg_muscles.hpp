@@ -51,25 +51,23 @@ std::vector<unit> geyer_herr_leg_muscles(const model<Root>& m, const leg_dof_nam
                             .angle_offset = pi,
                             .angle_scale = 1.0};
     };
-    auto knee_x = [&](double s, double r, double max, double ref, double rho) {
-      return joint_crossing{.dof = knee,
+    // A variable-arm crossing of DOF `dof` whose Geyer angle is offset + scale q.
+    auto variable_x = [&](int dof, double offset, double scale, double s, double r, double max,
+                          double ref, double rho) {
+      return joint_crossing{.dof = dof,
                             .action = s,
                             .moment_arm = r,
                             .angle_of_max_arm = max * deg,
                             .reference_angle = ref * deg,
                             .length_factor = rho,
-                            .angle_offset = pi,
-                            .angle_scale = -1.0};
+                            .angle_offset = offset,
+                            .angle_scale = scale};
+    };
+    auto knee_x = [&](double s, double r, double max, double ref, double rho) {
+      return variable_x(knee, pi, -1.0, s, r, max, ref, rho);
     };
     auto ankle_x = [&](double s, double r, double max, double ref, double rho) {
-      return joint_crossing{.dof = ankle,
-                            .action = s,
-                            .moment_arm = r,
-                            .angle_of_max_arm = max * deg,
-                            .reference_angle = ref * deg,
-                            .length_factor = rho,
-                            .angle_offset = pi / 2,
-                            .angle_scale = 1.0};
+      return variable_x(ankle, pi / 2, 1.0, s, r, max, ref, rho);
     };
     auto one = [&](const char* n, unit_parameters p, joint_crossing a) {
       out.push_back({.name = side + n, .parameters = p, .crossings = {a, {}}, .num_crossings = 1});
