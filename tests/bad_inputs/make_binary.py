@@ -10,6 +10,7 @@ FILES = [
     "keyframes/binary_garbage.json",
     "nearest_neighbor/binary_garbage.json",
     "wang2009/binary_garbage.json",
+    "wang2012/binary_garbage.json",
     "trajectory_csv/binary_garbage.csv",
     "checkpoint/binary_garbage.ckpt",
     "normative_gait/binary_garbage.csv",

@@ -4,8 +4,9 @@
 // load_checkpoint must leave the optimizer exactly as it was.
 //
 // Nothing half-loaded: load_keyframes, load_nearest_neighbor, load_wang2009_controller,
-// load_trajectory_csv and load_normative_gait return their result by value, so a throw leaves the
-// caller with nothing; only load_checkpoint loads into an existing object, checked below.
+// load_wang2012_controller, load_trajectory_csv and load_normative_gait return their result by
+// value, so a throw leaves the caller with nothing; only load_checkpoint loads into an existing
+// object, checked below.
 #include <catch2/catch.hpp>
 
 #include <algorithm>
@@ -20,6 +21,7 @@
 
 #include "gaitsynth/controllers/fsm/wang2009_json.hpp"
 #include "gaitsynth/controllers/nearest_neighbor_json.hpp"
+#include "gaitsynth/controllers/reflex/wang2012_json.hpp"
 #include "gaitsynth/io/normative_gait.hpp"
 #include "gaitsynth/io/trajectory_csv.hpp"
 #include "gaitsynth/models/sharon2005.hpp"
@@ -85,6 +87,21 @@ const std::vector<bad_file> table = {
   {"wang2009/empty.json", {"empty.json: malformed JSON", "line 1, column 1", "unexpected end of input"}},
   {"wang2009/binary_garbage.json", {"binary_garbage.json", "line 1, column 1", "invalid literal; last read"}},
   {"wang2009/deeply_nested.json", {"deeply_nested.json", "line 3, column 265", "deeper than 256"}},
+
+  // Wang 2012 reflex controller JSON (load_wang2012_controller)
+  {"wang2012/truncated.json", {"truncated.json", "malformed JSON", "line 70, column 8", "missing closing quote", "'\"p_GL'"}},
+  {"wang2012/wrong_type_string.json", {"wrong_type_string.json", "parameters.G_SOL", "\"1.2\"", "string"}},
+  {"wang2012/wrong_type_array.json", {"wrong_type_array.json", "'parameters'", "got array"}},
+  {"wang2012/nan.json", {"nan.json", "parameters.G_VAS", "\"NaN\""}},
+  {"wang2012/inf.json", {"inf.json", "line 11, column 12", "1e999", "too large"}},
+  {"wang2012/missing_parameter.json", {"missing_parameter.json", "parameters.G_TA", "missing"}},
+  {"wang2012/missing_target_speed.json", {"missing_target_speed.json", "'target_speed'", "missing"}},
+  {"wang2012/unknown_parameter.json", {"unknown_parameter.json", "parameters.G_SOLL", "unknown parameter 'G_SOLL'"}},
+  {"wang2012/duplicate_key.json", {"duplicate_key.json", "line 16, column 3", "duplicate key \"G_SOL\"", "first at line 15"}},
+  {"wang2012/huge_number.json", {"huge_number.json", "line 5, column 16", "1000000000000000", "400 characters", "too large"}},
+  {"wang2012/empty.json", {"empty.json: malformed JSON", "line 1, column 1", "unexpected end of input"}},
+  {"wang2012/binary_garbage.json", {"binary_garbage.json", "line 1, column 1", "invalid literal; last read"}},
+  {"wang2012/deeply_nested.json", {"deeply_nested.json", "line 3, column 265", "deeper than 256"}},
 
   // trajectory CSV (load_trajectory_csv)
   {"trajectory_csv/truncated.csv", {"truncated.csv", "line 12", "no end-of-line", "truncated"}},
@@ -154,6 +171,8 @@ void load(const std::string& file) {
     (void)load_nearest_neighbor(human7, path);
   } else if (loader == "wang2009") {
     (void)load_wang2009_controller(path.string(), stocky_controller);
+  } else if (loader == "wang2012") {
+    (void)load_wang2012_controller(path.string());
   } else if (loader == "trajectory_csv") {
     (void)load_trajectory_csv(path.string());
   } else if (loader == "checkpoint") {
@@ -180,13 +199,13 @@ TEST_CASE("bad inputs: the table lists every file of the corpus", "[io][bad_inpu
   for (const auto& e : fs::recursive_directory_iterator(corpus))
     if (e.is_regular_file()) present.insert(fs::relative(e.path(), corpus).generic_string());
   CHECK(present == listed);
-  CHECK(loaders.size() == 6);
+  CHECK(loaders.size() == 7);
 }
 
 TEST_CASE("bad inputs: the valid file each defect was made from loads", "[io][bad_inputs]") {
-  for (const char* file :
-       {"keyframes/valid.json", "nearest_neighbor/valid.json", "wang2009/valid.json",
-        "trajectory_csv/valid.csv", "checkpoint/valid.ckpt", "normative_gait/valid.csv"}) {
+  for (const char* file : {"keyframes/valid.json", "nearest_neighbor/valid.json",
+                           "wang2009/valid.json", "wang2012/valid.json", "trajectory_csv/valid.csv",
+                           "checkpoint/valid.ckpt", "normative_gait/valid.csv"}) {
     INFO(file);
     CHECK_NOTHROW(load(file));
   }

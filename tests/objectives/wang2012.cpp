@@ -1,7 +1,7 @@
 // The effort terms of Wang et al. 2012 (objectives/wang2012/): the metabolic rates at points
 // computed by hand from the published forms, J_M's bookkeeping over a muscle-driven rollout
 // against an observer that recomputes every step, J_R / J_L / min_torque / min_act against the
-// torques and activations the rollout applied, and effort()'s weights.
+// torques and activations the rollout applied, effort()'s weights, and the Sec. 5 objective.
 #include <catch2/catch.hpp>
 
 #include <cmath>
@@ -17,6 +17,7 @@
 #include "gaitsynth/models/wang2012.hpp"
 #include "gaitsynth/objectives/wang2012/effort_terms.hpp"
 #include "gaitsynth/objectives/wang2012/metabolic_energy.hpp"
+#include "gaitsynth/objectives/wang2012/wang2012_objective.hpp"
 #include "gaitsynth/rollout/rollout.hpp"
 
 using namespace gaitsynth;
@@ -153,4 +154,60 @@ TEST_CASE("effort() weighs J_M, J_R and J_L as Sec. 5 does", "[objectives][wang2
                     Contains("body_mass") && Contains("-1"));
   CHECK_THROWS_WITH(wang2012::metabolic_energy(units, {.slow_twitch_ratio = 1.5}),
                     Contains("slow_twitch_ratio") && Contains("1.5"));
+}
+
+TEST_CASE("the Sec. 5 objective: the task terms of Wang 2009 and the effort, by name and weight",
+          "[objectives][wang2012]") {
+  const auto m = wang2012_humanoid();
+  const auto units = musculotendon::geyer_herr_leg_muscles(m);
+  const auto obj =
+      wang2012::objective(m, units, wang2012::metabolic_energy(units), {.target_speed = 1.5});
+  const auto& w = obj.weights();
+  CHECK(w[0] == 100.0);     // E_user
+  CHECK(w[2] == 120000.0);  // E_fail
+  CHECK(w[5] == 1.0);       // w_e J_effort (w_e inside the effort)
+  CHECK(obj.part<0>().opts().target_speed == 1.5);
+  CHECK(obj.part<1>().opts().target_speed == 1.5);
+  CHECK_THAT(obj.part<5>().weights()[0], WithinRel(0.004 / m.total_mass() * 100.0, 1e-15));
+  // The total of a rollout is the weighted sum of its terms, each measured alone (the others'
+  // weights 0) on the same deterministic rollout.
+  const musculotendon_actuator act(units);
+  const pd_actuator g = standing_pd(m, 1.0 / 2400.0, 0.2);
+  const pose_hold hold(m, {.output = command_kind::excitation,
+                           .kp = g.kp,
+                           .kd = g.kd,
+                           .num_excitations = act.num_units(),
+                           .excitation = 0.1});
+  rollout_options opt;
+  opt.duration = 0.5;
+  auto cost_with = [&](const wang2012::task_weights& tw) {
+    auto scratch = make_rollout_scratch(m);
+    const auto o = wang2012::objective(m, units, wang2012::metabolic_energy(units),
+                                       {.target_speed = 1.5, .weights = tw});
+    const std::vector<double> zeros(static_cast<std::size_t>(m.num_joint_dofs()), 0.0);
+    return rollout(m, act, hold, o, flat_terrain(), semi_implicit_euler(),
+                   std::span<const double>(zeros), opt, scratch)
+        .cost;
+  };
+  const wang2012::task_weights none{0, 0, 0, 0, 0, 0};
+  double sum = 0.0;
+  for (std::size_t i = 0; i < 6; ++i) {
+    wang2012::task_weights one = none;
+    std::array<double*, 6> field{&one.user, &one.vel,     &one.fail,
+                                 &one.head, &one.posture, &one.effort};
+    *field[i] = 1.0;
+    const double term = cost_with(one);
+    INFO(wang2012::objective_term_names[i] << " = " << term);
+    CHECK(std::isfinite(term));
+    CHECK(term >= 0.0);
+    sum += w[i] * term;
+  }
+  CHECK(cost_with(none) == 0.0);
+  CHECK_THAT(cost_with({}), WithinRel(sum, 1e-12));
+  CHECK_THROWS_WITH(
+      wang2012::objective(m, units, wang2012::metabolic_energy(units), {.weights = {.head = -1.0}}),
+      Contains("E_head") && Contains("-1"));
+  CHECK_THROWS_WITH(
+      wang2012::objective(m, units, wang2012::metabolic_energy(units), {.target_speed = NAN}),
+      Contains("target_speed"));
 }

@@ -1,22 +1,31 @@
-// The composition test of the 3D biped controllers (controllers/fsm/): each controller with each
-// integrator and terrain under the whole Wang 2009 objective, and each objective term of
-// objectives/wang2009/ alone, run a short rollout of the Wang 2009 humanoid through
-// mixed_pd_actuator, the actuator both controllers command.
+// The composition test of the 3D biped controllers (controllers/fsm/, controllers/reflex/): each
+// controller with each integrator and terrain under the whole Wang 2009 objective, and each
+// objective term of objectives/wang2009/ alone, run a short rollout of the Wang 2009 humanoid
+// through mixed_pd_actuator, the actuator both FSM controllers command; the muscle-reflex
+// controller through the musculotendon actuator under the Wang 2012 objective, the Wang 2009 one
+// and each term alone; and the FSM controller on the Wang 2012 body under the Wang 2012 task and
+// torque terms (every objective it accepts: the metabolic term needs muscles).
 #include <catch2/catch.hpp>
 
 #include <cmath>
 #include <tuple>
 
 #include "gaitsynth/actuators/mixed_pd.hpp"
+#include "gaitsynth/actuators/musculotendon/leg_muscles.hpp"
+#include "gaitsynth/actuators/musculotendon_actuator.hpp"
 #include "gaitsynth/contact/flat_terrain.hpp"
 #include "gaitsynth/contact/slope_terrain.hpp"
 #include "gaitsynth/controllers/fsm/simbicon.hpp"
 #include "gaitsynth/controllers/fsm/wang2009_controller.hpp"
 #include "gaitsynth/controllers/fsm/wang2009_table2.hpp"
+#include "gaitsynth/controllers/reflex/wang2012_reflex_controller.hpp"
 #include "gaitsynth/integrators/odeint.hpp"
 #include "gaitsynth/integrators/semi_implicit_euler.hpp"
 #include "gaitsynth/models/wang2009.hpp"
+#include "gaitsynth/models/wang2012.hpp"
 #include "gaitsynth/objectives/wang2009/wang2009_objective.hpp"
+#include "gaitsynth/objectives/wang2012/metabolic_energy.hpp"
+#include "gaitsynth/objectives/wang2012/wang2012_objective.hpp"
 #include "gaitsynth/rollout/rollout.hpp"
 
 using namespace gaitsynth;
@@ -95,4 +104,62 @@ TEST_CASE("every Wang 2009 term is an objective on its own", "[rollout][compose]
   check(wang2009::head(m));
   check(wang2009::power({.cost_of_transport = true}));
   check(wang2009::power_ratio(m));
+}
+
+namespace {
+
+/// The reflex controller from its start state, driving the 16 leg MTUs, for 0.05 s.
+template <class Integrator, class Terrain, class Objective>
+rollout_result run_muscles(const floating_model& m, const Terrain& ground, const Objective& obj) {
+  const musculotendon_actuator act(musculotendon::geyer_herr_leg_muscles(m));
+  const wang2012_reflex_controller c(m);
+  const std::vector<double> p = wang2012_reflex_controller::initial_parameters(m);
+  rollout_options o;
+  o.duration = 0.05;
+  auto scratch = make_rollout_scratch(m);
+  return rollout(m, act, c, obj, ground, Integrator{}, std::span<const double>(p), o, scratch);
+}
+
+}  // namespace
+
+TEST_CASE("the muscle-reflex controller composes with integrators, terrains and objectives",
+          "[rollout][compose][wang2012]") {
+  const auto m = wang2012_humanoid();
+  const auto units = musculotendon::geyer_herr_leg_muscles(m);
+  const auto obj = wang2012::objective(m, units, wang2012::metabolic_energy(units));
+  const auto check = [&](const rollout_result& r) {
+    CHECK(r.reason == stop_reason::horizon);
+    CHECK(std::isfinite(r.cost));
+  };
+  check(run_muscles<semi_implicit_euler>(m, flat_terrain{}, obj));
+  check(run_muscles<semi_implicit_euler>(m, slope_terrain(0.05), obj));
+  check(run_muscles<odeint_rk4>(m, flat_terrain{}, obj));
+  check(run_muscles<semi_implicit_euler>(m, flat_terrain{}, wang2009_objective(m)));
+  // Each Wang 2012 term alone.
+  check(run_muscles<semi_implicit_euler>(m, flat_terrain{}, wang2012::metabolic_energy(units)));
+  check(run_muscles<semi_implicit_euler>(m, flat_terrain{}, wang2012::other_joint_torque(units)));
+  check(run_muscles<semi_implicit_euler>(m, flat_terrain{}, wang2012::joint_limit_torque(units)));
+  check(
+      run_muscles<semi_implicit_euler>(m, flat_terrain{}, wang2012::sagittal_joint_torque(units)));
+  check(run_muscles<semi_implicit_euler>(m, flat_terrain{}, wang2012::mean_squared_activation{}));
+}
+
+TEST_CASE("the torque-driven FSM controller on the Wang 2012 body under the Wang 2012 terms",
+          "[rollout][compose][wang2012]") {
+  const auto m = wang2012_humanoid();
+  const auto units = musculotendon::geyer_herr_leg_muscles(m);
+  const auto check = [&](const auto& obj) {
+    const rollout_result r = run<wang2009_case, semi_implicit_euler>(m, flat_terrain{}, obj);
+    CHECK(r.reason == stop_reason::horizon);
+    CHECK(std::isfinite(r.cost));
+  };
+  // The task terms and the torque efforts: J_R, J_L and the min_torque ablation's J_M.
+  const wang2012::effort_weights w;
+  const double we = w.effort_per_kg / m.total_mass();
+  check(weighted_sum<wang2009::user_gait, wang2009::failure, wang2012::mean_squared_joint_torque,
+                     wang2012::mean_squared_joint_torque, wang2012::mean_squared_joint_torque>(
+      {100.0, 120000.0, we * 5.0, we * w.other_torque, we * w.limit_torque},
+      wang2009::user_gait(m, {.target_speed = 1.25}), wang2009::failure(),
+      wang2012::sagittal_joint_torque(units), wang2012::other_joint_torque(units),
+      wang2012::joint_limit_torque(units)));
 }

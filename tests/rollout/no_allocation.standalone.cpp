@@ -238,7 +238,7 @@ TEST_CASE("no heap allocation in the step loop of a rollout", "[rollout][allocat
     const auto m = wang2012_humanoid();
     const auto units = musculotendon::geyer_herr_leg_muscles(m);
     const musculotendon_actuator act(units);
-    const auto p = reflex::reflex_initial_parameters();
+    const auto p = wang2012_reflex_controller::initial_parameters(m);  // its start, Sec. 4.4
     auto opt = options_for(m, flat_terrain());
     opt.detect_falls = false;
     auto scratch = make_rollout_scratch(m);

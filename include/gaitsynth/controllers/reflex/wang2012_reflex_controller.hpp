@@ -22,23 +22,31 @@
 /// vector is not in the delayed sensor history), its rate by a difference of two delayed samples.
 /// "lead": in double stance only the leading leg (ankle further ahead) holds the trunk.
 ///
-/// The DOFs the muscles do not drive get the simplest form of Sec. 4.4 for now (ours, not yet
-/// optimized): PD servos to 0 with fixed gains (options), the toes the 30 N m/rad spring and the
-/// arms the 30 N m/rad, 3 N m s/rad spring-dampers of models/wang2012.hpp. The world-frame
-/// targets, coronal balance feedback and arm coupling of Sec. 4.4, the start-state parameters and
-/// an optimized walker come next (docs/reproductions/wang2012.md).
+/// The DOFs the muscles do not drive follow Sec. 4.4 (upper_body_control.hpp) in two mirrored
+/// states, the leg that struck last standing. The parameter vector is the 58 of
+/// reflex_parameters.hpp, the 31 of upper_body_parameters.hpp and the 33 of
+/// start_state_parameters.hpp: 122 (the paper: 124; the difference is in upper_body_parameters).
+/// The rollout starts from the start-state parameters (controller_with_initial_state) unless
+/// options::start_from_parameters is false.
 #include <Eigen/Core>
 #include <array>
 #include <cmath>
 #include <cstdint>
 #include <span>
+#include <string>
+#include <vector>
 
 #include "gaitsynth/actuators/command_kind.hpp"
+#include "gaitsynth/actuators/mixed_pd.hpp"
+#include "gaitsynth/actuators/pd.hpp"
 #include "gaitsynth/controllers/concept.hpp"
 #include "gaitsynth/controllers/fsm/biped_layout.hpp"
 #include "gaitsynth/controllers/reflex/leg_phase.hpp"
 #include "gaitsynth/controllers/reflex/reflex_laws.hpp"
 #include "gaitsynth/controllers/reflex/reflex_parameters.hpp"
+#include "gaitsynth/controllers/reflex/start_state_parameters.hpp"
+#include "gaitsynth/controllers/reflex/upper_body_control.hpp"
+#include "gaitsynth/controllers/reflex/upper_body_parameters.hpp"
 #include "gaitsynth/controllers/sensors.hpp"
 #include "gaitsynth/error.hpp"
 #include "gaitsynth/models/wang2012.hpp"
@@ -47,9 +55,9 @@
 namespace gaitsynth {
 
 struct wang2012_reflex_options {
-  double leg_length = 0.0;  ///< m, normalizes d; 0: hip-to-ankle length of the model at q = 0
-  double servo_kp = 300.0;  ///< N m / rad: the non-muscle leg, back and neck DOFs (ours)
-  double servo_kd = 30.0;   ///< N m s / rad
+  double leg_length = 0.0;   ///< m, normalizes d; 0: hip-to-ankle length of the model at q = 0
+  double dt = 1.0 / 2400.0;  ///< s, the physics timestep the PD gains are capped for
+  bool start_from_parameters = true;  ///< false: keep the rollout's initial state
 };
 
 class wang2012_reflex_controller {
@@ -57,8 +65,16 @@ class wang2012_reflex_controller {
   static constexpr int num_muscles = 16;  ///< 8 per leg, geyer_herr_leg_muscles order
   using options = wang2012_reflex_options;
 
+  /// The parameter vector's parts, in order.
+  static constexpr std::size_t num_reflex = reflex::reflex_parameter_count;
+  static constexpr std::size_t num_upper_body = reflex::upper_body_parameter_count;
+  static constexpr std::size_t num_start = reflex::start_state_layout::size;
+  static constexpr std::size_t parameter_count = num_reflex + num_upper_body + num_start;
+
   struct state_type {
     std::array<reflex::leg_state, 2> legs;
+    int support =
+        1;  ///< the leg that struck last (Sec. 4.4's state); the start stands on the right
     std::array<double, 2> lean_at_liftoff{};  ///< Theta when each leg last lifted off, rad
     std::int64_t commands = 0;
   };
@@ -72,15 +88,53 @@ class wang2012_reflex_controller {
           m.bodies[static_cast<std::size_t>(layout_.leg[0].foot)].joint_offset.norm();
     }
     check_positive(opt_.leg_length, "wang2012_reflex_controller: leg_length (m)");
-    check_argument(std::isfinite(opt_.servo_kp) && opt_.servo_kp >= 0 &&
-                       std::isfinite(opt_.servo_kd) && opt_.servo_kd >= 0,
-                   "wang2012_reflex_controller: servo gains must be finite and >= 0, got ",
-                   opt_.servo_kp, ", ", opt_.servo_kd);
+    check_positive(opt_.dt, "wang2012_reflex_controller: dt (s)");
+    // Caps: pd_actuator::capped with requests no DOF can take (as wang2009_controller).
+    const int nj = m.num_joint_dofs();
+    const pd_actuator c = pd_actuator::capped(m, Eigen::VectorXd::Constant(nj, 1e7),
+                                              Eigen::VectorXd::Constant(nj, 1e6), opt_.dt);
+    caps_ = {c.kp, c.kd};
+    start_dofs_ = reflex::start_state_dofs(m);
+    const auto p = initial_parameters(m);
+    bind(p);
   }
 
-  std::size_t num_parameters() const { return reflex::reflex_parameter_count; }
-  void bind(std::span<const double> p) { params_ = reflex::reflex_parameters_from(p); }
+  /// Geyer & Herr's reflex values, our Sec. 4.4 values and Geyer & Herr's start (each part's file).
+  static std::vector<double> initial_parameters(const floating_model& m) {
+    std::vector<double> out;
+    out.reserve(parameter_count);
+    for (double x : reflex::reflex_initial_parameters()) out.push_back(x);
+    for (double x : reflex::upper_body_initial_parameters()) out.push_back(x);
+    for (double x : reflex::start_state_initial_parameters(m)) out.push_back(x);
+    return out;
+  }
+  /// Every parameter's name, in order.
+  static std::vector<std::string> parameter_names() {
+    std::vector<std::string> out;
+    for (auto n : reflex::reflex_parameter_names) out.emplace_back(n);
+    for (auto n : reflex::upper_body_parameter_names) out.emplace_back(n);
+    for (int i = 0; i < static_cast<int>(num_start); ++i)
+      out.push_back(reflex::start_state_parameter_name(i));
+    return out;
+  }
+
+  std::size_t num_parameters() const { return parameter_count; }
+  void bind(std::span<const double> p) {
+    check_argument(p.size() == parameter_count, "wang2012_reflex_controller: expected ",
+                   parameter_count, " parameters (", num_reflex, " reflex, ", num_upper_body,
+                   " upper-body, ", num_start, " start-state), got ", p.size());
+    params_ = reflex::reflex_parameters_from(p.first(num_reflex));
+    upper_ = reflex::upper_body_parameters_from(p.subspan(num_reflex, num_upper_body));
+    start_ = reflex::start_state_parameters_from(p.subspan(num_reflex + num_upper_body));
+  }
   const reflex::reflex_parameter_vector& parameters() const { return params_; }
+  const reflex::upper_body_parameter_vector& upper_body_parameters() const { return upper_; }
+  const reflex::start_state_vector& start_state_parameters() const { return start_; }
+
+  /// The start state of the parameters (no allocation when s has the model's sizes).
+  void initial_state(const floating_model& m, sim_state& s) const {
+    if (opt_.start_from_parameters) reflex::write_start_state(m, start_, start_dofs_, s);
+  }
   double leg_length() const { return opt_.leg_length; }
 
   double period() const { return 0.0; }
@@ -122,10 +176,17 @@ class wang2012_reflex_controller {
                        s.delayed_contact_count(g.toes, reflex_delays::contact) >
                    0;
     }
+    if (st.commands == 1) {
+      // The start's support: the lower foot (a tie: the right, as the start-state parameters
+      // stand). Not contact, which a start placed exactly on the ground may not register yet.
+      const auto height = [&](int k) { return s.body_position[layout_.leg[k].foot].z(); };
+      st.support = height(0) < height(1) ? 0 : 1;
+    }
     for (int k = 0; k < 2; ++k) {
       const leg_phase before = st.legs[k].phase;
       st.legs[k].update(contact[k], st.legs[1 - k], d[k], P[d_SI], P[d_SP], s.t);
       if (in_stance(before) && !in_stance(st.legs[k].phase)) st.lean_at_liftoff[k] = lean;
+      if (!in_stance(before) && in_stance(st.legs[k].phase)) st.support = k;  // foot strike
     }
     const bool double_stance = in_stance(st.legs[0].phase) && in_stance(st.legs[1].phase);
     const int lead = ankle_x[0] >= ankle_x[1] ? 0 : 1;
@@ -201,7 +262,9 @@ class wang2012_reflex_controller {
         }
       }
     }
-    write_servos(nj, cmd);
+    mixed_command out(cmd.segment(num_muscles, 4 * nj));
+    const vec3 offset = s.com - s.body_position[layout_.leg[st.support].foot];
+    upper_body_control(s, layout_, upper_, caps_, st.support, heading, offset, s.com_velocity, out);
   }
 
  private:
@@ -211,31 +274,13 @@ class wang2012_reflex_controller {
     return body_world_angles(s.delayed_body_rotation(layout_.torso, delay), heading).sagittal;
   }
 
-  /// The mixed block: muscle DOFs limp (their torque is the muscles'), toes and arms the passive
-  /// springs of Sec. 4.3-4.4, every other DOF a PD servo to 0 (ours, file comment).
-  void write_servos(int nj, Eigen::Ref<Eigen::VectorXd> cmd) const {
-    auto target = cmd.segment(num_muscles, nj);
-    auto kp = cmd.segment(num_muscles + nj, nj);
-    auto kd = cmd.segment(num_muscles + 2 * nj, nj);
-    cmd.segment(num_muscles + 3 * nj, nj).setZero();
-    target.setZero();
-    kp.setConstant(opt_.servo_kp);
-    kd.setConstant(opt_.servo_kd);
-    for (const biped_leg& g : layout_.leg) {
-      for (int j : {g.hip_y, g.knee, g.ankle_y}) kp[j] = kd[j] = 0.0;
-      kp[g.toe] = wang2012_passive::toe_stiffness;
-      kd[g.toe] = 0.0;
-    }
-    for (const biped_arm& a : layout_.arm)
-      for (int j : {a.shoulder_x, a.shoulder_y, a.shoulder_z, a.elbow_y, a.elbow_z}) {
-        kp[j] = wang2012_passive::arm_stiffness;
-        kd[j] = wang2012_passive::arm_damping;
-      }
-  }
-
   options opt_;
   biped_layout layout_;
   reflex::reflex_parameter_vector params_;
+  reflex::upper_body_parameter_vector upper_{};
+  reflex::start_state_vector start_{};
+  std::array<int, reflex::start_state_layout::num_dofs> start_dofs_{};
+  reflex::gain_caps caps_;
 };
 
 }  // namespace gaitsynth

@@ -1,0 +1,210 @@
+// Wang, Hamner, Delp & Koltun 2012: optimize a muscle-driven 3D walker (16 Hill-type MTUs on the
+// sagittal hips, knees and ankles, reflex control with neural delays, Sec. 4) for a target speed
+// with CMA-ES (Sec. 5: sigma 0.005 on normalized parameters, 50 samples per iteration) on the task
+// terms and the metabolic effort (objectives/wang2012/wang2012_objective.hpp), evaluating 10 s
+// rollouts at 2400 Hz on every core it is given. The run writes into its run folder (--out DIR,
+// default out/wang2012_walk/<UTC time>/), checkpoints every 10 iterations, and `--resume DIR`
+// continues it with the same result.
+//
+//   wang2012_walk [--speed 1.25] [--iterations N] [--threads N] [--seed K] [--out DIR]
+//                 [--init FILE] [--horizon S] [--sigma S] [--population N] [--check-seconds S]
+//   wang2012_walk --resume DIR [--threads N]
+//   wang2012_walk --replay FILE [--check-seconds S] [--out DIR]
+//
+// Every form takes the viewer flags (--html FILE, --filmstrip FILE, --csv FILE, ...) for the
+// check rollout. Writes DIR/wang2012_walk.controller.json, .convergence.csv, .checkpoint, .csv
+// (the check rollout) and prints a one-line JSON summary on stdout.
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <iostream>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+#include "command_line.hpp"
+#include "gaitsynth/actuators/musculotendon/leg_muscles.hpp"
+#include "gaitsynth/actuators/musculotendon_actuator.hpp"
+#include "gaitsynth/controllers/reflex/wang2012_json.hpp"
+#include "gaitsynth/gaitsynth.hpp"
+#include "gaitsynth/io/csv.hpp"
+#include "gaitsynth/models/wang2012.hpp"
+#include "gaitsynth/objectives/wang2012/metabolic_energy.hpp"
+#include "gaitsynth/objectives/wang2012/wang2012_objective.hpp"
+#include "gaitsynth/rollout/start_perturbations.hpp"
+#include "gaitsynth/rollout/walk_check.hpp"
+#include "gaitsynth/synthesis/wang2009_simulation.hpp"
+#include "gaitsynth/synthesis/wang2012_search_space.hpp"
+
+using namespace gaitsynth;
+namespace fs = std::filesystem;
+
+namespace {
+
+struct cli {
+  double speed = 1.25;  // m/s, nwalk (Sec. 6.1)
+  long long iterations = 3000;
+  unsigned threads = 0;
+  unsigned long long seed = 1;
+  fs::path out;
+  bool resume = false;
+  std::string init, replay;
+  double check_seconds = 20.0;
+  double horizon = 10.0;  // s, "not falling down for 10 seconds"
+  double sigma = 0.005;   // Sec. 5
+  int population = 50;    // Sec. 5
+  std::string command, out_arg;
+  nlohmann::json options;
+  viz_outputs viz;
+};
+
+cli parse(int argc, char** argv) {
+  cli c;
+  for (int i = 0; i < argc; ++i) c.command += (i ? " " : "") + std::string(argv[i]);
+  CLI::App app{"Wang et al. 2012: optimize a muscle-driven walker, or replay a saved one.",
+               "wang2012_walk"};
+  app.option_defaults()->always_capture_default();
+  std::string out, resume;
+  app.add_option("--speed", c.speed, "target COM speed, m/s (nwalk 1.25)")
+      ->check(example_cli::in_range(0.01, 10.0));
+  app.add_option("--iterations", c.iterations, "CMA-ES iterations")
+      ->check(example_cli::integer_in(0, 10000000));
+  example_cli::add_threads(app, c.threads);
+  example_cli::add_seed(app, c.seed);
+  app.add_option("--out", out, "run folder (default out/wang2012_walk/<UTC time>/)");
+  app.add_option("--resume", resume, "continue the run in this folder with its recorded options");
+  app.add_option("--init", c.init, "start from this saved controller (JSON)")
+      ->check(CLI::ExistingFile);
+  app.add_option("--replay", c.replay, "replay this saved controller (JSON) instead")
+      ->check(CLI::ExistingFile);
+  app.add_option("--check-seconds", c.check_seconds, "length of the check rollout, s")
+      ->check(example_cli::in_range(0.01, 10000.0));
+  app.add_option("--horizon", c.horizon, "evaluation length, s (10)")
+      ->check(example_cli::in_range(0.01, 1000.0));
+  app.add_option("--sigma", c.sigma, "CMA-ES step size on [0, 1] (Sec. 5: 0.005)")
+      ->check(example_cli::in_range(1e-9, 1.0));
+  app.add_option("--population", c.population, "CMA-ES samples per iteration (Sec. 5: 50)")
+      ->check(example_cli::integer_in(2, 100000));
+  example_cli::add_viewer_flags(app, c.viz);
+  example_cli::parse(app, argc, argv);
+  if (!resume.empty()) {
+    example_cli::reparse_recorded(app, argv[0], resume, {"threads"});
+    out = resume;
+    c.resume = true;
+  }
+  c.threads = example_cli::resolve_threads(c.threads);
+  c.out_arg = out;
+  c.options = example_cli::effective_options(app);
+  return c;
+}
+
+int run(const cli& c) {
+  const floating_model m = wang2012_humanoid();
+  const auto units = musculotendon::geyer_herr_leg_muscles(m);
+  const musculotendon_actuator act(units);
+  const wang2012_reflex_controller ctrl(m);
+  std::vector<double> x0 = wang2012_reflex_controller::initial_parameters(m);
+  double speed = c.speed;
+  if (!c.init.empty() || !c.replay.empty()) {
+    const wang2012_saved_controller s =
+        load_wang2012_controller(c.replay.empty() ? c.init : c.replay);
+    x0 = s.parameters;
+    if (!c.replay.empty()) speed = s.target_speed;
+  }
+  const auto obj =
+      wang2012::objective(m, units, wang2012::metabolic_energy(units), {.target_speed = speed});
+  rollout_options opt = wang2009_rollout_options(m);  // 2400 Hz, the Wang 2009 contact
+  const rollout_problem prob{m, act, ctrl, obj, flat_terrain{}, semi_implicit_euler{}, opt};
+  const std::string stem = (c.out / "wang2012_walk").string();
+  Eigen::VectorXd best = Eigen::Map<const Eigen::VectorXd>(x0.data(), std::ssize(x0));
+  double best_cost = prob.cost(best, c.horizon);
+  optimization_result res;
+  auto save = [&](const Eigen::VectorXd& x, double cost) {
+    wang2012_saved_controller s;
+    s.target_speed = speed;
+    s.cost = cost;
+    s.parameters.assign(x.data(), x.data() + x.size());
+    s.info["command"] = c.command;
+    save_wang2012_controller(stem + ".controller.json", s);
+  };
+  if (c.replay.empty()) {
+    thread_pool_evaluator pool(c.threads);
+    problem_contexts ctx(prob, pool.thread_count());
+    problem_cost cost(prob, c.horizon, ctx);
+    cmaes_options co;
+    co.sigma0 = c.sigma;
+    co.seed = c.seed;
+    co.population_size = c.population;
+    co.stop.max_iterations = c.iterations;
+    co.stop.no_improvement_iterations = 300;
+    cmaes cma(wang2012_search_space(x0), co);
+    run_options ro;
+    ro.progress = &std::cerr;
+    ro.progress_interval = 10.0;
+    ro.log_file = stem + ".convergence.csv";
+    ro.checkpoint_file = stem + ".checkpoint";
+    ro.checkpoint_every = 10;
+    ro.resume = c.resume;
+    auto keep_best = [&](const optimizer_status& st) {
+      if (st.iteration % 10 == 0 && std::isfinite(cma.best_value()))
+        save(cma.best_x(), cma.best_value());
+    };
+    res = minimize(cma, cost, pool, ro, keep_best);
+    best = res.x;
+    best_cost = res.value;
+    save(best, best_cost);
+  }
+  // Check: the walk for check_seconds, recorded, and from 10 perturbed starts.
+  trajectory tr;
+  rollout_options check = walk_options(opt);
+  check.record = &tr;
+  check.record_every = 40;
+  check.duration = c.check_seconds;
+  auto scratch = make_rollout_scratch(m);
+  const std::span<const double> bx(best.data(), static_cast<std::size_t>(best.size()));
+  const rollout_result r = rollout(m, act, prob.controller_with(best), obj, flat_terrain{},
+                                   semi_implicit_euler{}, bx, check, scratch);
+  save_csv(stem + ".csv", tr);
+  if (c.viz.any()) {
+    viz_outputs v = c.viz;
+    v.html_options.title = "Wang et al. 2012, muscle-driven walk";
+    v.filmstrip.t_end = std::min(3.0, tr.frames.back().t);
+    v.filmstrip.interval = 0.1;
+    v.filmstrip.title = v.html_options.title;
+    write_viz_outputs(m, tr, v, &std::cerr);
+  }
+  int walking = 0;
+  for (const Eigen::VectorXd& dv : joint_velocity_perturbations(m, 10, 0.05, 2012)) {
+    rollout_options po = walk_options(opt);
+    po.initial_velocity_offset = dv;
+    po.duration = c.check_seconds;
+    walking += walked(rollout(m, act, prob.controller_with(best), obj, flat_terrain{},
+                              semi_implicit_euler{}, bx, po, scratch));
+  }
+  const walk_check w = judge_walk(r);
+  nlohmann::json sum;
+  sum["cost"] = best_cost;
+  sum["check_cost"] = r.cost;
+  sum["verdict"] = verdict(w);
+  sum["time"] = w.seconds;
+  sum["distance"] = w.distance;
+  sum["speed"] = w.average_speed;
+  sum["target_speed"] = speed;
+  sum["perturbed_starts_walked"] = walking;
+  sum["evaluations"] = res.evaluations;
+  sum["iterations"] = res.iterations;
+  example_cli::report_summary(sum, c.out);
+  return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) try {
+  cli c = parse(argc, argv);
+  c.out = example_cli::run_folder("wang2012_walk", c.out_arg);
+  if (!c.resume) example_cli::write_options(c.command, c.options, c.out);
+  return run(c);
+} catch (const std::exception& e) {
+  std::cerr << "wang2012_walk: " << e.what() << "\n";
+  return 1;
+}
