@@ -8,8 +8,13 @@
 //
 //   wang2012_walk [--speed 1.25] [--iterations N] [--threads N] [--seed K] [--out DIR]
 //                 [--init FILE] [--horizon S] [--sigma S] [--population N] [--check-seconds S]
+//                 [--robust-starts K] [--start-sigma S]
 //   wang2012_walk --resume DIR [--threads N]
 //   wang2012_walk --replay FILE [--check-seconds S] [--out DIR]
+//
+// --robust-starts K (beyond the paper, as wang2009_walk's) adds K rollouts per candidate from
+// starts whose joint velocities are perturbed by a seeded N(0, start_sigma^2), the same for every
+// candidate, so the cost stays a deterministic function of the parameters.
 //
 // Every form takes the viewer flags (--html FILE, --filmstrip FILE, --csv FILE, ...) for the
 // check rollout. Writes DIR/wang2012_walk.controller.json, .convergence.csv, .checkpoint, .csv
@@ -20,14 +25,17 @@
 #include <iostream>
 #include <nlohmann/json.hpp>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 #include "command_line.hpp"
 #include "gaitsynth/actuators/musculotendon/leg_muscles.hpp"
 #include "gaitsynth/actuators/musculotendon_actuator.hpp"
+#include "gaitsynth/analysis/standard_score.hpp"
 #include "gaitsynth/controllers/reflex/wang2012_json.hpp"
 #include "gaitsynth/gaitsynth.hpp"
 #include "gaitsynth/io/csv.hpp"
+#include "gaitsynth/io/normative_gait.hpp"
 #include "gaitsynth/models/wang2012.hpp"
 #include "gaitsynth/objectives/wang2012/metabolic_energy.hpp"
 #include "gaitsynth/objectives/wang2012/wang2012_objective.hpp"
@@ -53,6 +61,8 @@ struct cli {
   double horizon = 10.0;  // s, "not falling down for 10 seconds"
   double sigma = 0.005;   // Sec. 5
   int population = 50;    // Sec. 5
+  int robust_starts = 0;
+  double start_sigma = 0.05;  // rad/s, the claim tests' perturbation
   std::string command, out_arg;
   nlohmann::json options;
   viz_outputs viz;
@@ -85,6 +95,10 @@ cli parse(int argc, char** argv) {
       ->check(example_cli::in_range(1e-9, 1.0));
   app.add_option("--population", c.population, "CMA-ES samples per iteration (Sec. 5: 50)")
       ->check(example_cli::integer_in(2, 100000));
+  app.add_option("--robust-starts", c.robust_starts, "rollouts per candidate from perturbed starts")
+      ->check(example_cli::integer_in(0, 1000));
+  app.add_option("--start-sigma", c.start_sigma, "joint-velocity perturbation of those, rad/s")
+      ->check(example_cli::in_range(0.0, 10.0));
   example_cli::add_viewer_flags(app, c.viz);
   example_cli::parse(app, argc, argv);
   if (!resume.empty()) {
@@ -127,10 +141,11 @@ int run(const cli& c) {
     s.info["command"] = c.command;
     save_wang2012_controller(stem + ".controller.json", s);
   };
-  if (c.replay.empty()) {
+  // CMA-ES on `problem`'s cost at the horizon (the paper's problem, or one with robust variants).
+  auto optimize = [&](const auto& problem) {
     thread_pool_evaluator pool(c.threads);
-    problem_contexts ctx(prob, pool.thread_count());
-    problem_cost cost(prob, c.horizon, ctx);
+    problem_contexts ctx(problem, pool.thread_count());
+    problem_cost cost(problem, c.horizon, ctx);
     cmaes_options co;
     co.sigma0 = c.sigma;
     co.seed = c.seed;
@@ -153,6 +168,21 @@ int run(const cli& c) {
     best = res.x;
     best_cost = res.value;
     save(best, best_cost);
+  };
+  if (c.replay.empty()) {
+    if (c.robust_starts == 0) {
+      optimize(prob);
+    } else {
+      // Seeded apart from the check's starts (2012 below), so the check judges unseen starts.
+      std::vector<std::decay_t<decltype(prob)>> variants;
+      for (const Eigen::VectorXd& dv :
+           joint_velocity_perturbations(m, c.robust_starts, c.start_sigma, 1000 + c.seed)) {
+        auto v = prob;
+        v.options.initial_velocity_offset = dv;
+        variants.push_back(v);
+      }
+      optimize(make_problem_with_variants(prob, std::move(variants)));
+    }
   }
   // Check: the walk for check_seconds, recorded, and from 10 perturbed starts.
   trajectory tr;
@@ -165,12 +195,42 @@ int run(const cli& c) {
   const rollout_result r = rollout(m, act, prob.controller_with(best), obj, flat_terrain{},
                                    semi_implicit_euler{}, bx, check, scratch);
   save_csv(stem + ".csv", tr);
+  // Gait cycles of the left leg (after the first 2 s): hip, knee and ankle angles and torques per
+  // kg, against the adult data of data/normative_gait/ with their standard scores.
+  const normative_gait human = load_normative_gait(
+      std::string(GAITSYNTH_SOURCE_DIR) + "/data/normative_gait/falisse2019_subject1_walking.csv");
+  std::vector<gait_channel> channels = human_sagittal_channels("l");
+  for (const gait_channel& g : human_sagittal_moment_channels("l", m.total_mass()))
+    channels.push_back(g);
+  gait_cycle_options go;
+  go.channels = channels;
+  go.samples = 100;
+  std::vector<gait_reference> references;
+  nlohmann::json scores = nlohmann::json::object();
+  if (!tr.frames.empty() && tr.frames.back().t > 4.0) {
+    trajectory steady = tr;
+    std::erase_if(steady.frames, [](const trajectory_frame& f) { return f.t < 2.0; });
+    const gait_cycle_data g = gait_cycles(m, steady, go);
+    for (std::size_t k = 0; k < channels.size(); ++k) {
+      const normative_curve& h = human.curve(channels[k].label);
+      references.push_back({.channel = k,
+                            .label = "human, 1.32 m/s (Falisse et al. 2019)",
+                            .percent = h.percent,
+                            .mean = h.mean,
+                            .sd = h.sd});
+      if (g.num_cycles() >= 1) scores[channels[k].label] = standard_score(g.percent, g.mean[k], h);
+    }
+  }
   if (c.viz.any()) {
     viz_outputs v = c.viz;
     v.html_options.title = "Wang et al. 2012, muscle-driven walk";
     v.filmstrip.t_end = std::min(3.0, tr.frames.back().t);
     v.filmstrip.interval = 0.1;
     v.filmstrip.title = v.html_options.title;
+    v.gait.cycles = go;
+    v.gait.references = references;
+    v.gait.show_cycles = false;
+    v.gait.title = "Wang et al. 2012, muscle-driven walk: gait cycles (left leg)";
     write_viz_outputs(m, tr, v, &std::cerr);
   }
   int walking = 0;
@@ -191,6 +251,7 @@ int run(const cli& c) {
   sum["speed"] = w.average_speed;
   sum["target_speed"] = speed;
   sum["perturbed_starts_walked"] = walking;
+  sum["standard_scores"] = scores;
   sum["evaluations"] = res.evaluations;
   sum["iterations"] = res.iterations;
   example_cli::report_summary(sum, c.out);

@@ -97,6 +97,31 @@ TEST_CASE("gait_cycles: segment and relative pitch channels, given starts", "[vi
   CHECK_THROWS_WITH(gait_cycles(m, traj, o), Catch::Contains("hip/knee/ankle"));
 }
 
+TEST_CASE("gait_cycles: a joint torque channel reads the recorded torques", "[viz][gait]") {
+  const auto m = viz_test::make_biped<planar_root>();
+  auto traj = viz_test::make_walk(m, 3.0, 0.01, 1.0);
+  const int j = m.dof_index("lknee");
+  // A torque known in closed form: 10 sin(2 pi t) + 3 N m.
+  for (auto& f : traj.frames) {
+    f.tau = Eigen::VectorXd::Zero(m.nv());
+    f.tau[planar_root::nv + j] = 10.0 * std::sin(2 * std::numbers::pi * f.t) + 3.0;
+  }
+  gait_cycle_options o;
+  o.cycle_starts = {0.5, 1.5, 2.5};
+  o.samples = 11;
+  o.channels = {{.type = gait_channel::kind::joint_torque, .name = "lknee", .scale = -0.5}};
+  const gait_cycle_data d = gait_cycles(m, traj, o);
+  REQUIRE(d.num_cycles() == 2);
+  for (std::size_t s = 0; s < d.percent.size(); ++s) {
+    const double t = 0.5 + d.percent[s] / 100.0;
+    CHECK(d.mean[0][s] ==
+          Approx(-0.5 * (10.0 * std::sin(2 * std::numbers::pi * t) + 3.0)).margin(1e-9));
+  }
+  traj.frames[3].tau.resize(0);  // a frame recorded without torques
+  CHECK_THROWS_WITH(gait_cycles(m, traj, o),
+                    Catch::Contains("lknee") && Catch::Contains("no recorded torques"));
+}
+
 TEST_CASE("gait_cycles: a trajectory without strikes has no cycle, not an error", "[viz][gait]") {
   const auto m = viz_test::make_biped<planar_root>();
   auto traj = viz_test::make_walk(m, 0.3, 0.01, 1.0);

@@ -3,7 +3,8 @@
 /// Gait-cycle analysis of a recorded trajectory: heel strikes (a foot's contact points going from
 /// none touching to at least one touching), sagittal angle channels (a joint angle, a segment's
 /// pitch in the world, or the pitch between two segments) and their curves against percent of the
-/// gait cycle, averaged over cycles with their spread, as in Wang et al. 2009, Figure 6.
+/// gait cycle, averaged over cycles with their spread, as in Wang et al. 2009, Figure 6; and joint
+/// torque channels for torque curves (Wang et al. 2012, Figure 7).
 /// gait_plot_svg.hpp draws them; the HTML player uses the heel strikes for its cycle plots.
 #include <Eigen/Core>
 #include <Eigen/Geometry>
@@ -23,9 +24,10 @@ namespace gaitsynth {
 /// One curve of a gait plot: value = scale * angle + offset, angle in radians.
 struct gait_channel {
   enum class kind {
-    joint_angle,    ///< the joint DOF `name` (its q value)
-    segment_pitch,  ///< pitch of body `name` about world +y: atan2(R(0,2), R(2,2)) of R_world_body
-    relative_pitch  ///< pitch of body `name` relative to body `reference`: same on R_ref^T R_body
+    joint_angle,     ///< the joint DOF `name` (its q value)
+    segment_pitch,   ///< pitch of body `name` about world +y: atan2(R(0,2), R(2,2)) of R_world_body
+    relative_pitch,  ///< pitch of body `name` relative to body `reference`: same on R_ref^T R_body
+    joint_torque     ///< the actuator's torque on joint DOF `name` (frame tau), N m
   };
   kind type = kind::joint_angle;
   std::string label;      ///< panel title ("hip"); empty: `name`
@@ -180,6 +182,14 @@ std::vector<double> channel_series(const model<Root>& m, const trajectory& traj,
   if (c.type == gait_channel::kind::joint_angle) {
     const int j = m.dof_index(c.name);
     for (std::size_t f = 0; f < traj.frames.size(); ++f) out[f] = traj.frames[f].q[Root::nq + j];
+  } else if (c.type == gait_channel::kind::joint_torque) {
+    const int j = m.dof_index(c.name);
+    for (std::size_t f = 0; f < traj.frames.size(); ++f) {
+      const Eigen::VectorXd& tau = traj.frames[f].tau;
+      check_argument(tau.size() == m.nv(), "gait channel '", c.name, "': frame ", f,
+                     " has no recorded torques");
+      out[f] = tau[Root::nv + j];
+    }
   } else {
     const int b = m.body_index(c.name);
     const int r = c.type == gait_channel::kind::relative_pitch ? m.body_index(c.reference) : -1;
