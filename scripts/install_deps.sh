@@ -7,11 +7,12 @@ pkgs=(g++ cmake ninja-build libeigen3-dev libboost-dev nlohmann-json3-dev libcli
 if [[ "${1:-}" == "--tests" ]]; then
   # catch2 2.13: tests; libbenchmark-dev: benchmarks (built to keep them compiling);
   # libmujoco-dev: rigid-body oracle and benchmark peer; chromium: headless player test;
-  # python3: plot scripts; libcgal-dev: the exact QP solver the QP tests compare with;
+  # python3: plot scripts; python3-matplotlib: scripts/plot_convergence.py and its test;
+  # libcgal-dev: the exact QP solver the QP tests compare with;
   # Open MPI: the MPI evaluator (gaitsynth::mpi) and its tests under mpirun.
   # libqhull-dev: libmujoco-dev exports its include dir without depending on it.
-  pkgs+=(catch2 libbenchmark-dev libmujoco-dev libqhull-dev chromium python3 libcgal-dev
-         libopenmpi-dev openmpi-bin)
+  pkgs+=(catch2 libbenchmark-dev libmujoco-dev libqhull-dev chromium python3 python3-matplotlib
+         libcgal-dev libopenmpi-dev openmpi-bin)
 fi
 missing=()
 for p in "${pkgs[@]}"; do

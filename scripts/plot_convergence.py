@@ -1,19 +1,23 @@
 #!/usr/bin/env python3
-"""Convergence plot (SVG) from gaitsynth optimizer CSV logs.
+"""Convergence plot (SVG, PNG or PDF) from gaitsynth optimizer CSV logs, drawn with matplotlib.
 
-Plain Python 3, no third-party packages (matplotlib is not needed): the SVG is written directly.
+Needs matplotlib (Debian: python3-matplotlib); it draws off-screen (the Agg backend), so no display
+is needed. viz/convergence_plot_svg.hpp draws a similar plot from C++ without any dependency.
 
     scripts/plot_convergence.py LOG.csv [LOG2.csv ...] -o plot.svg [--label A --label B] [--title T]
                                 [--x evaluations|iteration] [--no-median] [--no-step]
 
+The output format is the extension of -o: .svg, .png or .pdf.
+
 Each log is what `gaitsynth::minimize` writes with `run_options::log_file`: one row per
 iteration with the columns stage, restart, iteration, evaluations, best, iteration_best,
 iteration_median, iteration_worst, step_size, axis_ratio, batch_size, non_finite, elapsed_s
-(and optionally one column per parameter). The top panel shows the best value so far (solid) and
-the median of each iteration (dotted) on a log scale against evaluations; the bottom panel the step
-size (sigma for CMA-ES, alpha for SDS). Continuation stages are laid end to end (cumulative
-evaluations) and separated by dashed lines, like Sharon & van de Panne 2005, Fig. 9; restarts are
-marked with small ticks.
+(and optionally one column per parameter). The figure is laid out like pycma's `cma.plot()`: the
+top panel shows the best value so far (solid) and the median of each iteration (dotted) on a log
+scale against evaluations; the bottom panel the step size (sigma for CMA-ES, alpha for SDS), also
+on a log scale. Continuation stages are laid end to end (cumulative evaluations) and separated by
+dashed lines, like Sharon & van de Panne 2005, Fig. 9; restarts are marked with small ticks at the
+bottom of the top panel. Values that are not finite and positive are not drawn.
 """
 
 import argparse
@@ -23,20 +27,26 @@ import os
 import sys
 
 COLORS = ["#1f77b4", "#d62728", "#2ca02c", "#9467bd", "#ff7f0e", "#8c564b", "#e377c2", "#17becf"]
-FLOOR = 1e-300
+FORMATS = ("svg", "png", "pdf")
+REQUIRED = {"stage", "restart", "iteration", "evaluations", "best", "step_size"}
 
 
 def read_log(path):
-    """Returns a list of dict rows with numeric fields and cumulative evaluations."""
+    """Returns (rows, stage_starts): dict rows with numeric fields and cumulative evaluations and
+    iterations, and the cumulative evaluations where each stage after the first begins."""
     rows = []
-    with open(path, newline="") as f:
-        reader = csv.DictReader(f)
-        required = {"stage", "restart", "iteration", "evaluations", "best", "step_size"}
-        missing = required - set(reader.fieldnames or [])
-        if missing:
-            raise SystemExit(f"{path}: not a gaitsynth optimizer log (missing {sorted(missing)})")
-        for r in reader:
-            rows.append({k: _num(v) for k, v in r.items() if k is not None})
+    try:
+        with open(path, newline="") as f:
+            reader = csv.DictReader(f)
+            missing = REQUIRED - set(reader.fieldnames or [])
+            if missing:
+                raise SystemExit(f"{path}: not a gaitsynth optimizer log (missing {sorted(missing)})")
+            for r in reader:
+                rows.append({k: _num(v) for k, v in r.items() if k is not None})
+    except OSError as e:
+        raise SystemExit(f"{path}: cannot read ({e.strerror or e})")
+    except (UnicodeDecodeError, csv.Error) as e:
+        raise SystemExit(f"{path}: not a gaitsynth optimizer log ({e})")
     # Continuation stages restart their counters: make evaluations and iterations cumulative.
     # A resumed run repeats the iterations after its checkpoint: keep the last occurrence.
     dedup = {}
@@ -66,176 +76,110 @@ def _num(v):
         return float("nan")
 
 
-def _finite(v):
-    return v is not None and not math.isnan(v) and not math.isinf(v)
+def _positive(v):
+    """v if it can be drawn on a log axis, else NaN (matplotlib breaks the line there)."""
+    return v if v is not None and math.isfinite(v) and v > 0 else float("nan")
 
 
-class Axis:
-    def __init__(self, lo, hi, log):
-        self.log = log
-        if log:
-            lo, hi = math.log10(max(lo, FLOOR)), math.log10(max(hi, FLOOR))
-            lo, hi = math.floor(lo), math.ceil(hi)
-        if hi <= lo:
-            hi = lo + 1
-        self.lo, self.hi = lo, hi
-
-    def frac(self, v):
-        if self.log:
-            v = math.log10(max(v, FLOOR))
-        return (v - self.lo) / (self.hi - self.lo)
-
-    def ticks(self):
-        if self.log:
-            span = int(self.hi - self.lo)
-            step = max(1, math.ceil(span / 8))
-            return [(10.0 ** e, f"1e{int(e)}") for e in range(int(self.lo), int(self.hi) + 1, step)]
-        span = self.hi - self.lo
-        raw = span / 6
-        mag = 10 ** math.floor(math.log10(raw))
-        step = min((m * mag for m in (1, 2, 2.5, 5, 10) if m * mag >= raw), default=mag * 10)
-        t = math.ceil(self.lo / step) * step
-        out = []
-        while t <= self.hi + 1e-9 * span:
-            out.append((t, _fmt(t)))
-            t += step
-        return out
+def _boundaries(rows, xk, key):
+    """x values where column key ("stage" or "restart") changes; a restart counter that changes
+    with the stage (each stage counts from 0) is no restart."""
+    return [rows[k - 1][xk] for k in range(1, len(rows))
+            if rows[k][key] != rows[k - 1][key]
+            and (key == "stage" or rows[k]["stage"] == rows[k - 1]["stage"])]
 
 
-def _fmt(v):
-    if v == 0:
-        return "0"
-    if abs(v) >= 1 and abs(v) < 1e7 and float(v).is_integer():
-        return f"{int(v)}"
-    if abs(v) >= 1e7 or abs(v) < 1e-3:
-        return f"{v:.2g}"
-    return f"{v:g}"
-
-
-def _esc(s):
-    return s.replace("&", "&amp;").replace("<", "&lt;").replace(">", "&gt;")
+def _pyplot():
+    try:
+        import matplotlib
+    except ImportError:
+        raise SystemExit("plot_convergence.py needs matplotlib "
+                         "(Debian: apt-get install python3-matplotlib)")
+    matplotlib.use("Agg")
+    # Reproducible files: the same logs give the same bytes (no date, fixed SVG ids).
+    matplotlib.rcParams["svg.hashsalt"] = "gaitsynth"
+    import matplotlib.pyplot as plt
+    return plt
 
 
 def plot(logs, labels, out, title, xkey, show_median, show_step):
-    width, left, right = 760, 80, 20
-    top_h, bottom_h, gap, top_margin, bottom_margin = 330, 150 if show_step else 0, 50, 45, 45
-    height = top_margin + top_h + (gap + bottom_h if show_step else 0) + bottom_margin + 20 * len(logs)
-    pw = width - left - right
+    fmt = os.path.splitext(out)[1].lower().lstrip(".")
+    if fmt not in FORMATS:
+        raise SystemExit(f"{out}: unknown output format (the -o extension must be "
+                         f"{', '.join('.' + f for f in FORMATS)})")
     xk = "cum_evaluations" if xkey == "evaluations" else "cum_iteration"
-
-    xs = [r[xk] for rows, _ in logs for r in rows]
-    ys = [r[k] for rows, _ in logs for r in rows for k in ("best", "iteration_median")
-          if k in r and _finite(r[k]) and r[k] > 0 and (k == "best" or show_median)]
-    ss = [r["step_size"] for rows, _ in logs for r in rows if _finite(r["step_size"]) and r["step_size"] > 0]
-    if not xs or not ys:
+    keys = ("best", "iteration_median") if show_median else ("best",)
+    if not any(math.isfinite(_positive(r.get(k))) for rows, _ in logs for r in rows for k in keys):
         raise SystemExit("nothing to plot (no finite positive values)")
-    xa = Axis(0.0, max(xs), False)
-    ya = Axis(min(ys), max(ys), True)
-    sa = Axis(min(ss), max(ss), True) if ss else None
+    has_step = any(math.isfinite(_positive(r["step_size"])) for rows, _ in logs for r in rows)
+    show_step = show_step and has_step
 
-    svg = [f'<svg xmlns="http://www.w3.org/2000/svg" width="{width}" height="{height}" '
-           f'viewBox="0 0 {width} {height}" font-family="sans-serif" font-size="12">',
-           f'<rect width="{width}" height="{height}" fill="white"/>']
-    if title:
-        svg.append(f'<text x="{left + pw / 2}" y="25" text-anchor="middle" font-size="15">{_esc(title)}</text>')
+    plt = _pyplot()
+    from matplotlib.lines import Line2D
+    if show_step:
+        fig, (ax, ax_step) = plt.subplots(2, 1, sharex=True, figsize=(8, 6.4),
+                                          gridspec_kw={"height_ratios": [2.2, 1]})
+    else:
+        fig, ax = plt.subplots(figsize=(8, 4.6))
+        ax_step = None
+    axes = [a for a in (ax, ax_step) if a is not None]
 
-    def panel(y0, h, yaxis, ylabel):
-        svg.append(f'<rect x="{left}" y="{y0}" width="{pw}" height="{h}" fill="none" stroke="#444"/>')
-        for v, lab in yaxis.ticks():
-            y = y0 + h - yaxis.frac(v) * h
-            if y0 - 0.5 <= y <= y0 + h + 0.5:
-                svg.append(f'<line x1="{left}" y1="{y:.1f}" x2="{left + pw}" y2="{y:.1f}" stroke="#ddd"/>')
-                svg.append(f'<text x="{left - 6}" y="{y + 4:.1f}" text-anchor="end">{lab}</text>')
-        for v, lab in xa.ticks():
-            x = left + xa.frac(v) * pw
-            svg.append(f'<line x1="{x:.1f}" y1="{y0}" x2="{x:.1f}" y2="{y0 + h}" stroke="#eee"/>')
-            svg.append(f'<text x="{x:.1f}" y="{y0 + h + 16}" text-anchor="middle">{lab}</text>')
-        svg.append(f'<text transform="translate({left - 60},{y0 + h / 2}) rotate(-90)" '
-                   f'text-anchor="middle">{_esc(ylabel)}</text>')
-
-    def polyline(rows, key, yaxis, y0, h, color, dash=None, width_px=1.8):
-        # Decimated to at most the first/lowest/highest/last point of each pixel column, so that
-        # runs of 1e5 iterations still give a small file that looks the same.
-        segs, cur = [], []
-        col, bucket = None, []
-
-        def flush():
-            if not bucket:
-                return
-            keep = {0, len(bucket) - 1,
-                    min(range(len(bucket)), key=lambda j: bucket[j][1]),
-                    max(range(len(bucket)), key=lambda j: bucket[j][1])}
-            cur.extend(bucket[j] for j in sorted(keep))
-            bucket.clear()
-
-        for r in rows:
-            v = r.get(key)
-            if _finite(v) and v > 0:
-                px = left + xa.frac(r[xk]) * pw
-                py = y0 + h - yaxis.frac(v) * h
-                if col is not None and int(px) != col:
-                    flush()
-                col = int(px)
-                bucket.append((px, py))
-            else:
-                flush()
-                if cur:
-                    segs.append(cur)
-                    cur = []
-                col = None
-        flush()
-        if cur:
-            segs.append(cur)
-        d = f' stroke-dasharray="{dash}"' if dash else ""
-        for s in segs:
-            pts = " ".join(f"{x:.1f},{y:.1f}" for x, y in s)
-            svg.append(f'<polyline fill="none" stroke="{color}" stroke-width="{width_px}"{d} '
-                       f'stroke-linejoin="round" points="{pts}"/>')
-
-    y_top = top_margin
-    panel(y_top, top_h, ya, "objective value")
     for i, (rows, stage_starts) in enumerate(logs):
         c = COLORS[i % len(COLORS)]
+        xs = [r[xk] for r in rows]
+        ax.plot(xs, [_positive(r["best"]) for r in rows], color=c, lw=1.8, label=labels[i])
         if show_median:
-            polyline(rows, "iteration_median", ya, y_top, top_h, c, dash="2,3", width_px=1.0)
-        polyline(rows, "best", ya, y_top, top_h, c)
-        for s in stage_starts:
-            x = left + xa.frac(s) * pw
-            svg.append(f'<line x1="{x:.1f}" y1="{y_top}" x2="{x:.1f}" y2="{y_top + top_h}" '
-                       f'stroke="{c}" stroke-dasharray="6,4"/>')
-        prev = None
-        for r in rows:
-            if prev is not None and r["restart"] != prev:
-                x = left + xa.frac(r[xk]) * pw
-                svg.append(f'<line x1="{x:.1f}" y1="{y_top + top_h}" x2="{x:.1f}" '
-                           f'y2="{y_top + top_h - 8}" stroke="{c}" stroke-width="1.5"/>')
-            prev = r["restart"]
-    y_bottom = y_top + top_h + gap
-    if show_step and sa:
-        panel(y_bottom, bottom_h, sa, "step size")
-        for i, (rows, _) in enumerate(logs):
-            polyline(rows, "step_size", sa, y_bottom, bottom_h, COLORS[i % len(COLORS)], width_px=1.2)
-        xlabel_y = y_bottom + bottom_h + 34
-    else:
-        xlabel_y = y_top + top_h + 34
-    svg.append(f'<text x="{left + pw / 2}" y="{xlabel_y}" text-anchor="middle">{xkey}</text>')
-    ly = xlabel_y + 22
-    for i, lab in enumerate(labels):
-        c = COLORS[i % len(COLORS)]
-        svg.append(f'<line x1="{left}" y1="{ly - 4}" x2="{left + 30}" y2="{ly - 4}" stroke="{c}" stroke-width="2"/>')
-        svg.append(f'<text x="{left + 38}" y="{ly}">{_esc(lab)}</text>')
-        ly += 20
-    note = "solid: best so far" + (", dotted: median of each iteration" if show_median else "")
-    svg.append(f'<text x="{left + pw}" y="{xlabel_y + 22}" text-anchor="end" fill="#555">{note}</text>')
-    svg.append("</svg>")
-    with open(out, "w") as f:
-        f.write("\n".join(svg) + "\n")
+            ax.plot(xs, [_positive(r.get("iteration_median")) for r in rows], color=c, lw=1.0,
+                    ls=":")
+        if ax_step is not None:
+            ax_step.plot(xs, [_positive(r["step_size"]) for r in rows], color=c, lw=1.2)
+        # Stage boundaries and restarts: at the cumulative evaluation (or iteration) count where
+        # the new stage or restart begins, i.e. the last one of the row before.
+        for x in _boundaries(rows, xk, "stage"):
+            for a in axes:
+                a.axvline(x, color=c, ls="--", lw=1.0, alpha=0.8)
+        for x in _boundaries(rows, xk, "restart"):
+            ax.axvline(x, ymin=0.0, ymax=0.05, color=c, lw=1.5)
+
+    ax.set_yscale("log")
+    ax.set_ylabel("objective value")
+    if ax_step is not None:
+        ax_step.set_yscale("log")
+        ax_step.set_ylabel("step size")
+    for a in axes:
+        a.grid(True, which="major", color="#dddddd", lw=0.8)
+        a.set_axisbelow(True)
+    axes[-1].set_xlabel(xkey)
+    axes[-1].set_xlim(left=0)
+    if title:
+        ax.set_title(title)
+
+    # Legend: one entry per log, then what the line styles mean (in grey).
+    handles, _ = ax.get_legend_handles_labels()
+    grey = "#555555"
+    handles.append(Line2D([], [], color=grey, lw=1.8, label="best so far"))
+    if show_median:
+        handles.append(Line2D([], [], color=grey, lw=1.0, ls=":", label="median of each iteration"))
+    if any(_boundaries(rows, xk, "stage") for rows, _ in logs):
+        handles.append(Line2D([], [], color=grey, lw=1.0, ls="--", label="stage boundary"))
+    if any(_boundaries(rows, xk, "restart") for rows, _ in logs):
+        handles.append(Line2D([], [], color=grey, lw=0, marker="|", markersize=8, label="restart"))
+    ax.legend(handles=handles, loc="upper right", fontsize="small", framealpha=0.9)
+
+    fig.tight_layout()
+    metadata = {"svg": {"Date": None}, "pdf": {"CreationDate": None}, "png": {}}[fmt]
+    try:
+        fig.savefig(out, format=fmt, metadata=metadata, dpi=120)
+    except OSError as e:
+        raise SystemExit(f"{out}: cannot write ({e.strerror or e})")
+    plt.close(fig)
 
 
 def main(argv=None):
     ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     ap.add_argument("logs", nargs="+", help="CSV logs written by gaitsynth::minimize")
-    ap.add_argument("-o", "--output", required=True, help="SVG file to write")
+    ap.add_argument("-o", "--output", required=True,
+                    help="file to write; its extension (.svg, .png, .pdf) gives the format")
     ap.add_argument("--label", action="append", dest="labels",
                     help="legend label of the next log (repeat once per log; default: file names)")
     ap.add_argument("--title", default="")
