@@ -1,15 +1,16 @@
 // The MJCF exporter's text, checked without MuJoCo (tests/io/mjcf.mujoco.cpp loads it in MuJoCo):
-// the document is well-formed XML (a small strict parser below: balanced tags, quoted attributes,
-// only the five predefined entities), it holds exactly one element per model part, numbers read
-// back bit-identical, bodies come depth-first with the model's parents, offsets, inertias and hinge
-// axes, the q/v permutation maps agree with the file, options do what they say, and bad names or
-// options throw std::invalid_argument naming the problem.
+// the document is well-formed XML (read by tinyxml2 through viz/xml_check.hpp: balanced tags,
+// quoted attributes, only predefined entities; here also no text content and whitespace between
+// attributes), it holds exactly one element per model part, numbers read back bit-identical,
+// bodies come depth-first with the model's parents, offsets, inertias and hinge axes, the q/v
+// permutation maps agree with the file, options do what they say, and bad names or options throw
+// std::invalid_argument naming the problem.
 #include <catch2/catch.hpp>
 
 #include <cctype>
 #include <cmath>
 #include <cstdio>
-#include <cstring>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <limits>
@@ -19,19 +20,21 @@
 #include <sstream>
 #include <stdexcept>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "gaitsynth/io/mjcf.hpp"
 #include "gaitsynth/model/state.hpp"
 #include "gaitsynth/models/models.hpp"
 #include "io/mjcf_test_models.hpp"
+#include "viz/xml_check.hpp"
 
 using namespace gaitsynth;
 using Catch::Matchers::Contains;
 
 namespace {
 
-// ---- A strict little XML reader (enough for MJCF; rejects anything malformed) ----------------
+// ---- The document as tinyxml2 reads it (viz/xml_check.hpp), copied into a plain tree ---------
 struct xml_element {
   std::string name;
   std::map<std::string, std::string> attr;
@@ -44,122 +47,55 @@ struct xml_element {
   bool has(const std::string& k) const { return attr.count(k) > 0; }
 };
 
-class xml_reader {
- public:
-  explicit xml_reader(const std::string& s) : s_(s) {}
-  xml_element document() {
-    skip_misc();
-    xml_element root = element();
-    skip_misc();
-    if (i_ != s_.size()) fail("content after the root element");
-    return root;
+xml_element copy_element(const tinyxml2::XMLElement& e) {
+  xml_element out;
+  out.name = e.Name();
+  for (const auto* a = e.FirstAttribute(); a; a = a->Next())
+    out.attr.emplace(a->Name(), a->Value());
+  for (const auto* c = e.FirstChild(); c; c = c->NextSibling()) {
+    if (const auto* ce = c->ToElement()) {
+      out.children.push_back(copy_element(*ce));
+    } else if (const auto* t = c->ToText()) {  // MJCF holds no text, only whitespace
+      for (char ch : std::string(t->Value()))
+        if (!std::isspace(static_cast<unsigned char>(ch)))
+          throw std::runtime_error("text content in <" + out.name + "> (line " +
+                                   std::to_string(t->GetLineNum()) + ")");
+    }
   }
+  return out;
+}
 
- private:
-  [[noreturn]] void fail(const std::string& what) const {
-    throw std::runtime_error("malformed XML at offset " + std::to_string(i_) + ": " + what);
-  }
-  bool starts(const char* p) const { return s_.compare(i_, std::strlen(p), p) == 0; }
-  void ws() {
-    while (i_ < s_.size() && std::isspace(static_cast<unsigned char>(s_[i_]))) ++i_;
-  }
-  void skip_misc() {  // whitespace and comments
-    for (;;) {
-      ws();
-      if (starts("<!--")) {
-        const auto e = s_.find("-->", i_ + 4);
-        if (e == std::string::npos) fail("unterminated comment");
-        if (s_.substr(i_ + 4, e - i_ - 4).find("--") != std::string::npos) fail("-- in comment");
-        i_ = e + 3;
-      } else {
-        return;
-      }
+// tinyxml2 accepts attributes with no whitespace between them (<a b="1"c="2"/>). MJCF holds no text
+// and its values no raw quotes, so outside comments every quoted string after '=' is an attribute
+// value, and whitespace, '/', '>' or '?' must follow it.
+void check_attribute_separation(const std::string& text) {
+  std::size_t p = 0;
+  while ((p = text.find_first_of("=<", p)) != std::string::npos) {
+    if (text.compare(p, 4, "<!--") == 0) {
+      p = text.find("-->", p);
+      continue;
     }
-  }
-  std::string ident() {
-    const std::size_t b = i_;
-    while (i_ < s_.size() && (std::isalnum(static_cast<unsigned char>(s_[i_])) || s_[i_] == '_' ||
-                              s_[i_] == '-' || s_[i_] == ':'))
-      ++i_;
-    if (b == i_) fail("expected a name");
-    return s_.substr(b, i_ - b);
-  }
-  std::string value() {
-    if (i_ >= s_.size() || (s_[i_] != '"' && s_[i_] != '\'')) fail("unquoted attribute value");
-    const char quote = s_[i_++];
-    std::string out;
-    while (i_ < s_.size() && s_[i_] != quote) {
-      const char c = s_[i_];
-      if (c == '<') fail("raw '<' in an attribute value");
-      if (static_cast<unsigned char>(c) < 0x20 && c != '\t' && c != '\n') fail("control char");
-      if (c == '&') {
-        static const std::pair<const char*, char> entities[] = {
-            {"&amp;", '&'}, {"&lt;", '<'}, {"&gt;", '>'}, {"&quot;", '"'}, {"&apos;", '\''}};
-        bool ok = false;
-        for (auto [e, ch] : entities)
-          if (starts(e)) {
-            out += ch;
-            i_ += std::strlen(e);
-            ok = true;
-            break;
-          }
-        if (!ok) fail("'&' that starts no predefined entity");
-      } else {
-        out += c;
-        ++i_;
-      }
+    std::size_t q = p + 1;
+    while (q < text.size() && std::isspace(static_cast<unsigned char>(text[q]))) ++q;
+    if (text[p] == '<' || q >= text.size() || (text[q] != '"' && text[q] != '\'')) {
+      p = q;
+      continue;
     }
-    if (i_ >= s_.size()) fail("unterminated attribute value");
-    ++i_;
-    return out;
+    const std::size_t e = text.find(text[q], q + 1);
+    if (e == std::string::npos) return;  // tinyxml2 has refused the document
+    if (e + 1 < text.size() && !std::isspace(static_cast<unsigned char>(text[e + 1])) &&
+        std::string_view("/>?").find(text[e + 1]) == std::string_view::npos)
+      throw std::runtime_error("no whitespace after the attribute value " +
+                               text.substr(q, e + 1 - q));
+    p = e + 1;
   }
-  xml_element element() {
-    if (i_ >= s_.size() || s_[i_] != '<') fail("expected '<'");
-    ++i_;
-    xml_element e;
-    e.name = ident();
-    for (;;) {
-      const std::size_t before = i_;
-      ws();
-      if (starts("/>")) {
-        i_ += 2;
-        return e;
-      }
-      if (starts(">")) {
-        ++i_;
-        break;
-      }
-      if (before == i_) fail("expected whitespace before an attribute");
-      const std::string k = ident();
-      ws();
-      if (i_ >= s_.size() || s_[i_] != '=') fail("expected '=' after attribute " + k);
-      ++i_;
-      ws();
-      if (!e.attr.emplace(k, value()).second) fail("duplicate attribute " + k);
-    }
-    for (;;) {
-      skip_misc();
-      if (starts("</")) {
-        i_ += 2;
-        if (ident() != e.name) fail("closing tag does not match <" + e.name + ">");
-        ws();
-        if (i_ >= s_.size() || s_[i_] != '>') fail("expected '>'");
-        ++i_;
-        return e;
-      }
-      if (starts("<")) {
-        e.children.push_back(element());
-      } else {
-        fail("text content in <" + e.name + ">");
-      }
-    }
-  }
-  const std::string& s_;
-  std::size_t i_ = 0;
-};
+}
 
 xml_element parse(const std::string& s) {
-  return xml_reader(s).document();
+  const viz_test::xml_document doc = viz_test::parse_xml(s);
+  xml_element root = copy_element(*doc->RootElement());
+  check_attribute_separation(s);
+  return root;
 }
 
 void collect(const xml_element& e, const std::string& name, std::vector<const xml_element*>& out) {
@@ -414,6 +350,19 @@ TEST_CASE("the MJCF of every built-in character is well-formed and mirrors it", 
     check_structure(wang2012_humanoid(), o);
     check_structure(wu2010_biped(), o);
   }
+}
+
+TEST_CASE("the MJCF reader refuses what XML or MJCF does not allow", "[io][mjcf]") {
+  CHECK(parse("<mujoco model='m'>\n  <!-- a=\"b\"c -->\n  <option a=\"1\" b='2'/>\n</mujoco>")
+            .children.at(0)
+            .at("b") == "2");
+  CHECK_THROWS_WITH(parse("<mujoco><option a=\"1\"b=\"2\"/></mujoco>"), Contains("whitespace"));
+  CHECK_THROWS_WITH(parse("<mujoco><option a='1'b='2'/></mujoco>"), Contains("whitespace"));
+  CHECK_THROWS_WITH(parse("<mujoco><body>x</body></mujoco>"), Contains("text content in <body>"));
+  CHECK_THROWS(parse("<mujoco><body a=\"1\" a=\"2\"/></mujoco>"));
+  CHECK_THROWS(parse("<mujoco><body></mujoco>"));
+  CHECK_THROWS(parse("<mujoco model=\"&nbsp;\"/>"));
+  CHECK_THROWS(parse("<mujoco/><mujoco/>"));
 }
 
 TEST_CASE("principal axes reproduce an inertia tensor and respect the triangle inequality",

@@ -38,6 +38,29 @@ TEST_CASE("the XML checker rejects broken documents", "[viz][svg]") {
   CHECK_THROWS(viz_test::check_xml("<svg>&nbsp;</svg>"));
   CHECK_THROWS(viz_test::check_xml("<svg/><svg/>"));
   CHECK_THROWS(viz_test::check_xml("<svg>"));
+  CHECK_THROWS(viz_test::check_xml("<svg a=\"1\" a=\"2\"/>"));
+  CHECK_THROWS(viz_test::check_xml("<svg><g></G></svg>"));
+  CHECK_THROWS(viz_test::check_xml("<svg/>x"));
+  CHECK_THROWS(viz_test::check_xml(""));
+  // What tinyxml2 accepts and xml_check.hpp refuses.
+  CHECK_THROWS(viz_test::check_xml("x<svg/>"));
+  CHECK_THROWS(viz_test::check_xml("<svg>&amp</svg>"));
+  CHECK_THROWS(viz_test::check_xml("<svg a=\"&#x;\"/>"));
+  CHECK_THROWS(viz_test::check_xml("<svg a=\"<\"/>"));
+  CHECK_THROWS(viz_test::check_xml("<svg>\x01</svg>"));
+  CHECK_THROWS(viz_test::check_xml("<svg><!-- a -- b --></svg>"));
+  CHECK_THROWS(viz_test::check_xml("<svg>]]></svg>"));
+  CHECK_THROWS(viz_test::check_xml("<!DOCTYPE svg><svg/>"));
+  CHECK_THROWS(viz_test::check_xml(" <?xml version=\"1.0\"?><svg/>"));
+  // Legal XML passes, with entities decoded.
+  const auto ok =
+      viz_test::parse_xml("<svg a='&lt;&#65;&#x42;&quot;'><![CDATA[<&>]]>t&amp;<!-- c --></svg>");
+  const tinyxml2::XMLElement& svg = *ok->RootElement();
+  CHECK(std::string(svg.Attribute("a")) == "<AB\"");
+  REQUIRE(svg.FirstChild()->ToText());
+  CHECK(svg.FirstChild()->ToText()->CData());
+  CHECK(std::string(svg.FirstChild()->Value()) == "<&>");
+  CHECK(std::string(svg.FirstChild()->NextSibling()->Value()) == "t&");
 }
 
 TEST_CASE("filmstrip SVG: well-formed, one group per strobe frame", "[viz][svg]") {
