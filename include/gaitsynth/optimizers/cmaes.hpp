@@ -16,12 +16,16 @@
 ///
 /// The strategy works in the normalized coordinates of a parameter_space; `ask()` returns user
 /// coordinates. Bounds are handled in normalized coordinates, by rejection sampling (Wu 2010:
-/// redraw a candidate until it lies inside the bounds, at most `max_resamples` times) or by
+/// redraw a candidate until it lies inside the bounds, at most `max_resamples` times), by
 /// repair: the objective is evaluated at the projection onto the box and the ranking value is
 /// f(projection) + penalty_weight * ||x - projection||^2, while the strategy keeps the unrepaired
-/// sample (so its distribution update stays unbiased and the penalty pulls it back). The default is
-/// rejection sampling, falling back to repair for a candidate that is still outside after
-/// `max_resamples` draws (e.g. when the optimum sits on a bound).
+/// sample (so its distribution update stays unbiased and the penalty pulls it back), or by
+/// pycma's default, a transformation: the objective is evaluated at T(x), T the smooth map into the
+/// box of bound_transform.hpp (the identity inside, away from the bounds), with no redraw and no
+/// penalty, and the strategy again keeps x; the mean then starts at T^{-1}(initial point), so that
+/// T(mean) is the initial point. The default is rejection sampling, falling back to repair for a
+/// candidate that is still outside after `max_resamples` draws (e.g. when the optimum sits on a
+/// bound).
 #include <Eigen/Core>
 #include <Eigen/Eigenvalues>
 
@@ -38,6 +42,7 @@
 #include <vector>
 
 #include "gaitsynth/error.hpp"
+#include "gaitsynth/optimizers/bound_transform.hpp"
 #include "gaitsynth/optimizers/checkpoint.hpp"
 #include "gaitsynth/optimizers/concept.hpp"
 #include "gaitsynth/optimizers/parameter_space.hpp"
@@ -48,6 +53,9 @@ namespace gaitsynth {
 enum class bound_handling {
   resample,  ///< rejection sampling (Wu 2010), repair after max_resamples failed draws (default)
   repair,    ///< projection onto the box plus a quadratic penalty on the distance
+  /// pycma's default: the objective sees T(x), a smooth map into the box that is the identity
+  /// inside it (bound_transform.hpp); no redraws, no penalty, the strategy keeps x
+  transform,
 };
 
 struct cmaes_options {
@@ -195,7 +203,12 @@ class cmaes {
 
     bounded_ = space_.bounded();
     rng_.seed(opt_.seed);
+    lower_ = space_.normalized_lower();
+    upper_ = space_.normalized_upper();
     mean_ = space_.initial_normalized();
+    // Start where T(mean) is the initial point (as pycma's x0 under BoundTransform), not at a point
+    // T would move (every point within the margins of a bound).
+    if (transforms()) mean_ = bound_transform_inverse(mean_, lower_, upper_);
     sigma_ = opt_.sigma0;
     C_.setIdentity(n_, n_);
     B_.setIdentity(n_, n_);
@@ -213,8 +226,8 @@ class cmaes {
   std::string_view name() const { return "cmaes"; }
 
   /// Samples lambda candidates x_k = m + sigma B D z_k ([T] Eqs. (38)-(40)) and returns them in
-  /// user coordinates (repaired into the bounds where bound handling repairs). Calling ask twice
-  /// without tell returns the same batch.
+  /// user coordinates (repaired into the bounds where bound handling repairs, T(x_k) under
+  /// bound_handling::transform). Calling ask twice without tell returns the same batch.
   const std::vector<Eigen::VectorXd>& ask() {
     if (asked_) return candidates_;
     const Eigen::Index lambda = p_.lambda;
@@ -227,13 +240,15 @@ class cmaes {
         Y_.col(k).noalias() = B_ * D_.cwiseProduct(z_);
         x = mean_ + sigma_ * Y_.col(k);
         ++draws;
-        if (!bounded_ || opt_.bounds == bound_handling::repair || space_.contains_normalized(x) ||
+        if (!bounded_ || opt_.bounds != bound_handling::resample || space_.contains_normalized(x) ||
             draws > opt_.max_resamples)
           break;
       }
       resamples_ += draws - 1;
       double pen = 0.0;
-      if (bounded_ && !space_.contains_normalized(x)) {
+      if (transforms()) {
+        x = bound_transform(x, lower_, upper_);  // inside the box: no repair, no penalty
+      } else if (bounded_ && !space_.contains_normalized(x)) {
         const Eigen::VectorXd xp = space_.project_normalized(x);
         pen = opt_.penalty_weight * (x - xp).squaredNorm();
         x = xp;
@@ -374,7 +389,12 @@ class cmaes {
 
   // ---- introspection (normalized coordinates) ----
   const Eigen::VectorXd& mean() const { return mean_; }
-  Eigen::VectorXd mean_user() const { return space_.to_user(mean_); }
+  /// The mean in user coordinates; under bound_handling::transform the transformed mean T(m) (the
+  /// point the objective would see; m itself may lie outside the box, e.g. at a mirror point
+  /// beyond a bound when the optimum is on that bound).
+  Eigen::VectorXd mean_user() const {
+    return space_.to_user(transforms() ? bound_transform(mean_, lower_, upper_) : mean_);
+  }
   double sigma() const { return sigma_; }
   const Eigen::MatrixXd& covariance() const { return C_; }
   const Eigen::VectorXd& axis_lengths() const { return D_; }  ///< sqrt of eigenvalues of C
@@ -383,6 +403,7 @@ class cmaes {
   std::int64_t iteration() const { return iteration_; }
   std::int64_t evaluations() const { return evaluations_; }
   std::int64_t non_finite_count() const { return non_finite_; }
+  // Both counts stay 0 under bound_handling::transform.
   std::int64_t resample_count() const { return resamples_; }  ///< redraws by rejection sampling
   std::int64_t repair_count() const { return repairs_; }      ///< candidates projected
   std::int64_t max_iterations() const { return max_iterations_; }
@@ -462,6 +483,8 @@ class cmaes {
   }
 
  private:
+  bool transforms() const { return bounded_ && opt_.bounds == bound_handling::transform; }
+
   void decompose() {
     // Symmetrize (the rank-mu product is symmetric only up to rounding) and decompose C = B D^2
     // B^T.
@@ -529,6 +552,7 @@ class cmaes {
   std::int64_t max_iterations_ = 0;
   std::size_t tolfun_window_ = 0;
   bool bounded_ = false;
+  Eigen::VectorXd lower_, upper_;  ///< normalized bounds (for bound_handling::transform)
 
   std::mt19937_64 rng_;
   Eigen::VectorXd mean_, pc_, ps_, D_, z_;
