@@ -11,8 +11,9 @@ if [[ "${1:-}" == "--tests" ]]; then
   # libcgal-dev: the exact QP solver the QP tests compare with;
   # Open MPI: the MPI evaluator (gaitsynth::mpi) and its tests under mpirun.
   # libqhull-dev: libmujoco-dev exports its include dir without depending on it.
+  # libtinyxml2-dev: an independent XML parser that reads the SVG and MJCF the tests write.
   pkgs+=(catch2 libbenchmark-dev libmujoco-dev libqhull-dev chromium python3 python3-matplotlib
-         libcgal-dev libopenmpi-dev openmpi-bin)
+         libcgal-dev libopenmpi-dev openmpi-bin libtinyxml2-dev)
 fi
 missing=()
 for p in "${pkgs[@]}"; do
