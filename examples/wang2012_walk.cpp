@@ -8,7 +8,7 @@
 //
 //   wang2012_walk [--speed 1.25] [--iterations N] [--threads N] [--seed K] [--out DIR]
 //                 [--init FILE] [--horizon S] [--sigma S] [--population N] [--check-seconds S]
-//                 [--robust-starts K] [--start-sigma S]
+//                 [--robust-starts K] [--start-sigma S] [--weight TERM=W]...
 //   wang2012_walk --resume DIR [--threads N]
 //   wang2012_walk --replay FILE [--check-seconds S] [--out DIR]
 //
@@ -23,6 +23,7 @@
 #include <cmath>
 #include <filesystem>
 #include <iostream>
+#include <map>
 #include <nlohmann/json.hpp>
 #include <string>
 #include <type_traits>
@@ -57,6 +58,7 @@ struct cli {
   fs::path out;
   bool resume = false;
   std::string init, replay;
+  std::map<std::string, double> weights;  // --weight TERM=W (ours: a continuation stage)
   double check_seconds = 20.0;
   double horizon = 10.0;  // s, "not falling down for 10 seconds"
   double sigma = 0.005;   // Sec. 5
@@ -95,6 +97,11 @@ cli parse(int argc, char** argv) {
       ->check(example_cli::in_range(1e-9, 1.0));
   app.add_option("--population", c.population, "CMA-ES samples per iteration (Sec. 5: 50)")
       ->check(example_cli::integer_in(2, 100000));
+  std::vector<std::string> weights;
+  app.add_option("--weight", weights,
+                 "TERM=W: a term's weight (E_user, E_vel, E_fail, E_head, E_posture, effort; "
+                 "repeatable)")
+      ->check(example_cli::name_equals_number());
   app.add_option("--robust-starts", c.robust_starts, "rollouts per candidate from perturbed starts")
       ->check(example_cli::integer_in(0, 1000));
   app.add_option("--start-sigma", c.start_sigma, "joint-velocity perturbation of those, rad/s")
@@ -106,13 +113,39 @@ cli parse(int argc, char** argv) {
     out = resume;
     c.resume = true;
   }
+  for (const std::string& v : weights) {
+    const std::size_t eq = v.find('=');
+    check_argument(eq != std::string::npos, "--weight wants TERM=W, got '", v, "'");
+    c.weights[v.substr(0, eq)] = std::stod(v.substr(eq + 1));
+  }
   c.threads = example_cli::resolve_threads(c.threads);
   c.out_arg = out;
   c.options = example_cli::effective_options(app);
   return c;
 }
 
-int run(const cli& c) {
+/// Sets the weight of term `name` (wang2012::objective_term_names, or "effort").
+void set_weight(wang2012::task_weights& w, const std::string& name, double value) {
+  check_argument(std::isfinite(value) && value >= 0.0, "--weight ", name,
+                 ": must be finite and >= 0, got ", value);
+  if (name == "E_user")
+    w.user = value;
+  else if (name == "E_vel")
+    w.vel = value;
+  else if (name == "E_fail")
+    w.fail = value;
+  else if (name == "E_head")
+    w.head = value;
+  else if (name == "E_posture")
+    w.posture = value;
+  else if (name == "effort")
+    w.effort = value;
+  else
+    throw std::invalid_argument("--weight: no term '" + name +
+                                "' (E_user, E_vel, E_fail, E_head, E_posture, effort)");
+}
+
+int run(cli c) {
   const floating_model m = wang2012_humanoid();
   const auto units = musculotendon::geyer_herr_leg_muscles(m);
   const musculotendon_actuator act(units);
@@ -124,9 +157,13 @@ int run(const cli& c) {
         load_wang2012_controller(c.replay.empty() ? c.init : c.replay);
     x0 = s.parameters;
     if (!c.replay.empty()) speed = s.target_speed;
+    // A replay is scored with the weights it was optimized with, unless told otherwise.
+    if (!c.replay.empty() && c.weights.empty())
+      c.weights = s.info.value("weights", std::map<std::string, double>{});
   }
-  const auto obj =
-      wang2012::objective(m, units, wang2012::metabolic_energy(units), {.target_speed = speed});
+  wang2012::objective_options oo{.target_speed = speed};
+  for (const auto& [t, w] : c.weights) set_weight(oo.weights, t, w);
+  const auto obj = wang2012::objective(m, units, wang2012::metabolic_energy(units), oo);
   rollout_options opt = wang2009_rollout_options(m);  // 2400 Hz, the Wang 2009 contact
   const rollout_problem prob{m, act, ctrl, obj, flat_terrain{}, semi_implicit_euler{}, opt};
   const std::string stem = (c.out / "wang2012_walk").string();
@@ -139,6 +176,7 @@ int run(const cli& c) {
     s.cost = cost;
     s.parameters.assign(x.data(), x.data() + x.size());
     s.info["command"] = c.command;
+    s.info["weights"] = c.weights;
     save_wang2012_controller(stem + ".controller.json", s);
   };
   // CMA-ES on `problem`'s cost at the horizon (the paper's problem, or one with robust variants).
