@@ -2,8 +2,12 @@
 // holding a pose with its 16 Hill-type MTUs at a constant excitation plus PD servos on every DOF
 // (musculotendon_actuator, scored by the metabolic effort w_e J_effort), next to the same body,
 // controller and servos without muscles (mixed_pd_actuator, distance objective): the difference
-// is what the muscles cost. BM_Musculotendon_Step16 times the actuator alone per physics step
-// (torques, then activation and fiber dynamics for 16 MTUs). Counters as in rollout.cpp.
+// is what the muscles cost. BM_Rollout_Wang2012_Walk10s_Muscles walks the saved muscle walker
+// (data/wang2012/walkers/nwalk.controller.json: the reflex controller, 16 MTUs, the whole Sec. 5
+// objective): one evaluation of a Wang 2012 optimization near its optimum, to set beside
+// BM_Rollout_Humanoid3D_Walk10s (rollout.cpp, the torque-driven Wang 2009 walker) in one run.
+// BM_Musculotendon_Step16 times the actuator alone per physics step (torques, then activation
+// and fiber dynamics for 16 MTUs). Counters as in rollout.cpp.
 #include <benchmark/benchmark.h>
 
 #include "gaitsynth/actuators/mixed_pd.hpp"
@@ -18,6 +22,11 @@
 #include "gaitsynth/objectives/wang2012/effort_terms.hpp"
 #include "gaitsynth/objectives/wang2012/metabolic_energy.hpp"
 #include "gaitsynth/rollout/rollout.hpp"
+#if __has_include(<nlohmann/json.hpp>)
+#include "gaitsynth/controllers/reflex/wang2012_json.hpp"
+#include "gaitsynth/objectives/wang2012/wang2012_objective.hpp"
+#include "gaitsynth/synthesis/wang2009_simulation.hpp"
+#endif
 
 namespace {
 
@@ -79,6 +88,36 @@ void BM_Rollout_Wang2012_Stand10s_Muscles(benchmark::State& state) {
               wang2012::effort(m.total_mass(), units, wang2012::metabolic_energy(units)));
 }
 BENCHMARK(BM_Rollout_Wang2012_Stand10s_Muscles)->Unit(benchmark::kMillisecond)->MinTime(2.0);
+
+#if __has_include(<nlohmann/json.hpp>)
+void BM_Rollout_Wang2012_Walk10s_Muscles(benchmark::State& state) {
+  const std::string path =
+      std::string(GAITSYNTH_SOURCE_DIR) + "/data/wang2012/walkers/nwalk.controller.json";
+  const auto m = wang2012_humanoid();
+  const auto units = musculotendon::geyer_herr_leg_muscles(m);
+  const musculotendon_actuator act(units);
+  const wang2012_saved_controller saved = load_wang2012_controller(path);
+  const wang2012_reflex_controller ctrl(m);
+  const auto obj = wang2012::objective(m, units, wang2012::metabolic_energy(units),
+                                       {.target_speed = saved.target_speed});
+  const rollout_options opt = wang2009_rollout_options(m);  // as examples/wang2012_walk.cpp
+  auto scr = make_rollout_scratch(m);
+  semi_implicit_euler integ;
+  std::int64_t steps = 0;
+  for (auto _ : state) {
+    const rollout_result r = rollout(m, act, ctrl, obj, flat_terrain{}, integ,
+                                     std::span<const double>(saved.parameters), opt, scr);
+    if (r.reason != stop_reason::horizon) state.SkipWithError("the walker did not walk 10 s");
+    steps += r.steps;
+    benchmark::DoNotOptimize(r.cost);
+  }
+  state.counters["real_time_factor"] = benchmark::Counter(
+      10.0 * static_cast<double>(state.iterations()), benchmark::Counter::kIsRate);
+  state.counters["us_per_step"] = benchmark::Counter(
+      1e-6 * static_cast<double>(steps), benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
+}
+BENCHMARK(BM_Rollout_Wang2012_Walk10s_Muscles)->Unit(benchmark::kMillisecond)->MinTime(2.0);
+#endif
 
 /// The actuator's share of a physics step: torques, then advance (activation, backward-Euler
 /// fiber step) of 16 MTUs, at a pose that changes every call so no result is reused.
