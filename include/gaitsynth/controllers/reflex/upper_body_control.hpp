@@ -29,6 +29,7 @@
 #include <Eigen/Core>
 #include <algorithm>
 #include <array>
+#include <tuple>
 
 #include "gaitsynth/actuators/mixed_pd.hpp"
 #include "gaitsynth/controllers/fsm/biped_layout.hpp"
