@@ -61,6 +61,55 @@ inline std::string wang2009_json_value(const nlohmann::json& v) {
   return s.size() > 60 ? s.substr(0, 57) + "..." : s;
 }
 
+/// v as a number, or std::invalid_argument naming `path`, `field` and the value. Finite: the text
+/// has no NaN and json_text_problem refuses overflow.
+inline double controller_json_number(const std::string& path, const nlohmann::json& v,
+                                     const std::string& field) {
+  if (!v.is_number())
+    wang2009_json_fail(
+        path, field,
+        "expected a number, got " + wang2009_json_value(v) + " (" + v.type_name() + ")");
+  return v.get<double>();
+}
+
+/// The "parameters" object of controller file j, in the order of `names`: an unknown, missing or
+/// non-number parameter is refused naming the file, the field and the value.
+inline std::vector<double> read_named_parameters(const std::string& path, const nlohmann::json& j,
+                                                 const std::vector<std::string>& names) {
+  if (!j.contains("parameters")) wang2009_json_fail(path, "parameters", "missing");
+  const nlohmann::json& p = j["parameters"];
+  if (!p.is_object())
+    wang2009_json_fail(path, "parameters",
+                       std::string("expected an object of name: value, got ") + p.type_name());
+  for (auto it = p.begin(); it != p.end(); ++it)
+    if (std::find(names.begin(), names.end(), it.key()) == names.end())
+      wang2009_json_fail(path, "parameters." + it.key(),
+                         "unknown parameter '" + it.key() + "' (the controller has " +
+                             std::to_string(names.size()) + " parameters: " + names.front() +
+                             ", ..., " + names.back() + ")");
+  std::vector<double> out;
+  out.reserve(names.size());
+  for (const std::string& n : names) {
+    if (!p.contains(n)) wang2009_json_fail(path, "parameters." + n, "missing");
+    out.push_back(controller_json_number(path, p[n], "parameters." + n));
+  }
+  return out;
+}
+
+/// Writes j with "parameters" set to `values` by `names` (checked to match) to `path`.
+inline void write_named_parameters(const std::string& path, nlohmann::json j,
+                                   const std::vector<std::string>& names,
+                                   const std::vector<double>& values, const char* what) {
+  check_size(static_cast<std::ptrdiff_t>(values.size()), static_cast<std::ptrdiff_t>(names.size()),
+             what);
+  nlohmann::json p = nlohmann::json::object();
+  for (std::size_t i = 0; i < names.size(); ++i) p[names[i]] = values[i];
+  j["parameters"] = p;
+  std::ofstream out(path);
+  if (!(out << j.dump(1) << "\n"))
+    throw std::runtime_error("cannot write controller file '" + path + "'");
+}
+
 }  // namespace detail
 
 /// The shape named by a saved controller (to build its model before reading its parameters).
@@ -83,10 +132,7 @@ inline wang2009_saved_controller load_wang2009_controller(const std::string& pat
     detail::wang2009_json_fail(path, field, what);
   };
   auto number = [&](const nlohmann::json& v, const std::string& field) {
-    if (!v.is_number())
-      fail(field,
-           "expected a number, got " + detail::wang2009_json_value(v) + " (" + v.type_name() + ")");
-    return v.get<double>();  // finite: the text has no NaN and json_text_problem refuses overflow
+    return detail::controller_json_number(path, v, field);
   };
   if (!j.is_object()) fail("(top level)", std::string("expected an object, got ") + j.type_name());
   wang2009_saved_controller s;
@@ -101,20 +147,7 @@ inline wang2009_saved_controller load_wang2009_controller(const std::string& pat
   optional_number("target_step_length", s.target_step_length);
   if (j.contains("cost")) s.cost = j["cost"].is_null() ? 0.0 : number(j["cost"], "cost");
   if (j.contains("info")) s.info = j["info"];
-  if (!j.contains("parameters")) fail("parameters", "missing");
-  const nlohmann::json& p = j["parameters"];
-  if (!p.is_object())
-    fail("parameters", std::string("expected an object of name: value, got ") + p.type_name());
-  const std::vector<std::string> names = c.parameter_names();
-  for (auto it = p.begin(); it != p.end(); ++it)
-    if (std::find(names.begin(), names.end(), it.key()) == names.end())
-      fail("parameters." + it.key(), "unknown parameter '" + it.key() + "' (the controller has " +
-                                         std::to_string(names.size()) + " parameters: " +
-                                         names.front() + ", ..., " + names.back() + ")");
-  for (const std::string& n : names) {
-    if (!p.contains(n)) fail("parameters." + n, "missing");
-    s.parameters.push_back(number(p[n], "parameters." + n));
-  }
+  s.parameters = detail::read_named_parameters(path, j, c.parameter_names());
   return s;
 }
 
@@ -122,9 +155,6 @@ inline wang2009_saved_controller load_wang2009_controller(const std::string& pat
 /// parameter count, std::runtime_error if the file cannot be written.
 inline void save_wang2009_controller(const std::string& path, const wang2009_controller& c,
                                      const wang2009_saved_controller& s) {
-  const auto names = c.parameter_names();
-  check_size(static_cast<std::ptrdiff_t>(s.parameters.size()),
-             static_cast<std::ptrdiff_t>(names.size()), "wang2009 parameter vector");
   nlohmann::json j;
   j["paper"] = "Wang, Fleet & Hertzmann 2009";
   j["shape"] = s.shape;
@@ -132,13 +162,9 @@ inline void save_wang2009_controller(const std::string& path, const wang2009_con
   j["target_step_length"] =
       s.target_step_length ? nlohmann::json(*s.target_step_length) : nlohmann::json(nullptr);
   j["cost"] = s.cost;
-  nlohmann::json p = nlohmann::json::object();
-  for (std::size_t i = 0; i < names.size(); ++i) p[names[i]] = s.parameters[i];
-  j["parameters"] = p;
   if (!s.info.empty()) j["info"] = s.info;
-  std::ofstream out(path);
-  if (!(out << j.dump(1) << "\n"))
-    throw std::runtime_error("cannot write controller file '" + path + "'");
+  detail::write_named_parameters(path, std::move(j), c.parameter_names(), s.parameters,
+                                 "wang2009 parameter vector");
 }
 
 }  // namespace gaitsynth

@@ -40,10 +40,7 @@ inline wang2012_saved_controller load_wang2012_controller(const std::string& pat
     detail::wang2009_json_fail(path, field, what);
   };
   auto number = [&](const nlohmann::json& v, const std::string& field) {
-    if (!v.is_number())
-      fail(field,
-           "expected a number, got " + detail::wang2009_json_value(v) + " (" + v.type_name() + ")");
-    return v.get<double>();  // finite: json_text refuses NaN and overflow
+    return detail::controller_json_number(path, v, field);
   };
   if (!j.is_object()) fail("(top level)", std::string("expected an object, got ") + j.type_name());
   wang2012_saved_controller s;
@@ -51,40 +48,21 @@ inline wang2012_saved_controller load_wang2012_controller(const std::string& pat
   s.target_speed = number(j["target_speed"], "target_speed");
   if (j.contains("cost")) s.cost = j["cost"].is_null() ? 0.0 : number(j["cost"], "cost");
   if (j.contains("info")) s.info = j["info"];
-  if (!j.contains("parameters")) fail("parameters", "missing");
-  const nlohmann::json& p = j["parameters"];
-  if (!p.is_object())
-    fail("parameters", std::string("expected an object of name: value, got ") + p.type_name());
-  const std::vector<std::string> names = wang2012_reflex_controller::parameter_names();
-  for (auto it = p.begin(); it != p.end(); ++it)
-    if (std::find(names.begin(), names.end(), it.key()) == names.end())
-      fail("parameters." + it.key(), "unknown parameter '" + it.key() + "' (the controller has " +
-                                         std::to_string(names.size()) + " parameters: " +
-                                         names.front() + ", ..., " + names.back() + ")");
-  for (const std::string& n : names) {
-    if (!p.contains(n)) fail("parameters." + n, "missing");
-    s.parameters.push_back(number(p[n], "parameters." + n));
-  }
+  s.parameters =
+      detail::read_named_parameters(path, j, wang2012_reflex_controller::parameter_names());
   return s;
 }
 
 /// Writes s to `path`, the parameters by name. Throws std::invalid_argument for a wrong parameter
 /// count, std::runtime_error if the file cannot be written.
 inline void save_wang2012_controller(const std::string& path, const wang2012_saved_controller& s) {
-  const auto names = wang2012_reflex_controller::parameter_names();
-  check_size(static_cast<std::ptrdiff_t>(s.parameters.size()),
-             static_cast<std::ptrdiff_t>(names.size()), "wang2012 parameter vector");
   nlohmann::json j;
   j["paper"] = "Wang, Hamner, Delp & Koltun 2012";
   j["target_speed"] = s.target_speed;
   j["cost"] = s.cost;
-  nlohmann::json p = nlohmann::json::object();
-  for (std::size_t i = 0; i < names.size(); ++i) p[names[i]] = s.parameters[i];
-  j["parameters"] = p;
   if (!s.info.empty()) j["info"] = s.info;
-  std::ofstream out(path);
-  if (!(out << j.dump(1) << "\n"))
-    throw std::runtime_error("cannot write controller file '" + path + "'");
+  detail::write_named_parameters(path, std::move(j), wang2012_reflex_controller::parameter_names(),
+                                 s.parameters, "wang2012 parameter vector");
 }
 
 }  // namespace gaitsynth
