@@ -68,6 +68,7 @@
 #include "gaitsynth/io/normative_gait.hpp"
 #include "gaitsynth/rollout/push_test.hpp"
 #include "gaitsynth/rollout/start_perturbations.hpp"
+#include "gaitsynth/synthesis/robust_variants.hpp"
 #include "gaitsynth/synthesis/wang2009_search_space.hpp"
 #include "gaitsynth/synthesis/wang2009_simulation.hpp"
 #ifdef GAITSYNTH_HAVE_MPI
@@ -437,23 +438,12 @@ int optimize_and_check(const floating_model& m, const cli& c, const wang2009_con
     } else {
       // Training perturbations are seeded apart from the check's (seed 2009 below), so the check
       // judges the walker on starts it was not optimized for.
-      const auto offsets =
-          joint_velocity_perturbations(m, c.robust_starts, c.start_sigma, 1000 + c.seed);
-      std::vector<std::decay_t<decltype(prob)>> variants;
-      for (const Eigen::VectorXd& dv : offsets) {
-        auto v = prob;
-        v.options.initial_velocity_offset = dv;
-        variants.push_back(v);
-      }
-      const int torso = m.body_index("torso");
-      for (int k = 0; k < c.robust_pushes; ++k) {
-        auto v = prob;
-        for (int i = 0; 2.0 + 3.0 * i + 0.4 < c.horizon; ++i) {
-          const vec3 d = table1_directions()[static_cast<std::size_t>((k + i) % 8)];
-          v.options.pushes.push_back(push{torso, c.push_force * d, 2.0 + 3.0 * i, 0.4});
-        }
-        variants.push_back(v);
-      }
+      auto variants = robust_variants(prob, {.starts = c.robust_starts,
+                                             .start_sigma = c.start_sigma,
+                                             .seed = 1000 + c.seed,
+                                             .pushes = c.robust_pushes,
+                                             .push_force = c.push_force,
+                                             .horizon = c.horizon});
       optimize(make_problem_with_variants(prob, std::move(variants)));
     }
   }

@@ -9,12 +9,19 @@
 //   wang2012_walk [--speed 1.25] [--iterations N] [--threads N] [--seed K] [--out DIR]
 //                 [--init FILE] [--horizon S] [--sigma S] [--population N] [--check-seconds S]
 //                 [--robust-starts K] [--start-sigma S] [--weight TERM=W]...
+//                 [--robust-pushes K] [--push-force N] [--effort metabolic|torque|activation]
+//                 [--weaken MTU=F]...
 //   wang2012_walk --resume DIR [--threads N]
 //   wang2012_walk --replay FILE [--check-seconds S] [--out DIR]
 //
 // --robust-starts K (beyond the paper, as wang2009_walk's) adds K rollouts per candidate from
 // starts whose joint velocities are perturbed by a seeded N(0, start_sigma^2), the same for every
-// candidate, so the cost stays a deterministic function of the parameters.
+// candidate, so the cost stays a deterministic function of the parameters. --robust-pushes K adds
+// K rollouts pushed on the torso for 0.4 s every 3 s (synthesis/robust_variants.hpp), the push-
+// robust walker of Sec. 6.4. --effort picks J_M: the metabolic energy, or the ablations min_torque
+// (w_M = 5) and min_act (w_M = 60000) of Sec. 6.2. --weaken GAS=0.25 scales both GAS units' F_max
+// (the weakened muscles of Sec. 6.2). A saved controller records its effort, weights and weakness,
+// and a replay uses them unless told otherwise.
 //
 // Every form takes the viewer flags (--html FILE, --filmstrip FILE, --csv FILE, ...) for the
 // check rollout. Writes DIR/wang2012_walk.controller.json, .convergence.csv, .checkpoint, .csv
@@ -24,6 +31,7 @@
 #include <filesystem>
 #include <iostream>
 #include <map>
+#include <sstream>
 #include <nlohmann/json.hpp>
 #include <string>
 #include <type_traits>
@@ -32,6 +40,7 @@
 #include "command_line.hpp"
 #include "gaitsynth/actuators/musculotendon/leg_muscles.hpp"
 #include "gaitsynth/actuators/musculotendon_actuator.hpp"
+#include "gaitsynth/analysis/muscle_recording.hpp"
 #include "gaitsynth/analysis/standard_score.hpp"
 #include "gaitsynth/controllers/reflex/wang2012_json.hpp"
 #include "gaitsynth/gaitsynth.hpp"
@@ -42,6 +51,7 @@
 #include "gaitsynth/objectives/wang2012/wang2012_objective.hpp"
 #include "gaitsynth/rollout/start_perturbations.hpp"
 #include "gaitsynth/rollout/walk_check.hpp"
+#include "gaitsynth/synthesis/robust_variants.hpp"
 #include "gaitsynth/synthesis/wang2009_simulation.hpp"
 #include "gaitsynth/synthesis/wang2012_search_space.hpp"
 
@@ -59,12 +69,17 @@ struct cli {
   bool resume = false;
   std::string init, replay;
   std::map<std::string, double> weights;  // --weight TERM=W (ours: a continuation stage)
+  std::string effort;  // metabolic (Sec. 5.1), torque or activation (Sec. 6.2); "": saved/metabolic
+  std::map<std::string, double> weaken;  // --weaken MTU=F (Sec. 6.2): F_max x F, both legs
+  int robust_pushes = 0;
+  double push_force = 100.0;  // N (Sec. 6.4)
   double check_seconds = 20.0;
   double horizon = 10.0;  // s, "not falling down for 10 seconds"
   double sigma = 0.005;   // Sec. 5
   int population = 50;    // Sec. 5
   int robust_starts = 0;
   double start_sigma = 0.05;  // rad/s, the claim tests' perturbation
+  std::string muscle_svg;     // Figure 5: lGAS excitation, activation, force, fiber length
   std::string command, out_arg;
   nlohmann::json options;
   viz_outputs viz;
@@ -104,8 +119,24 @@ cli parse(int argc, char** argv) {
       ->check(example_cli::name_equals_number());
   app.add_option("--robust-starts", c.robust_starts, "rollouts per candidate from perturbed starts")
       ->check(example_cli::integer_in(0, 1000));
+  app.add_option("--robust-pushes", c.robust_pushes, "rollouts per candidate with pushes")
+      ->check(example_cli::integer_in(0, 1000));
+  app.add_option("--push-force", c.push_force, "force of those pushes, N (Sec. 6.4: 100)")
+      ->check(example_cli::in_range(0.0, 100000.0));
+  app.add_option("--effort", c.effort,
+                 "J_M: metabolic (Sec. 5.1; default), torque (min_torque) or activation (min_act, "
+                 "Sec. 6.2); a replay's default: the saved one")
+      ->check(CLI::IsMember({"metabolic", "torque", "activation"}));
+  std::vector<std::string> weaken;
+  app.add_option("--weaken", weaken,
+                 "MTU=F: the MTU's F_max times F in both legs (GAS, SOL, HAM, VAS, ...; Sec. 6.2; "
+                 "repeatable)")
+      ->check(example_cli::name_equals_number());
   app.add_option("--start-sigma", c.start_sigma, "joint-velocity perturbation of those, rad/s")
       ->check(example_cli::in_range(0.0, 10.0));
+  app.add_option("--muscle-svg", c.muscle_svg,
+                 "write the left GAS's excitation, activation, force and fiber length over the "
+                 "gait cycle (Figure 5) as SVG");
   example_cli::add_viewer_flags(app, c.viz);
   example_cli::parse(app, argc, argv);
   if (!resume.empty()) {
@@ -117,6 +148,11 @@ cli parse(int argc, char** argv) {
     const std::size_t eq = v.find('=');
     check_argument(eq != std::string::npos, "--weight wants TERM=W, got '", v, "'");
     c.weights[v.substr(0, eq)] = std::stod(v.substr(eq + 1));
+  }
+  for (const std::string& v : weaken) {
+    const std::size_t eq = v.find('=');
+    check_argument(eq != std::string::npos, "--weaken wants MTU=F, got '", v, "'");
+    c.weaken[v.substr(0, eq)] = std::stod(v.substr(eq + 1));
   }
   c.threads = example_cli::resolve_threads(c.threads);
   c.out_arg = out;
@@ -145,25 +181,37 @@ void set_weight(wang2012::task_weights& w, const std::string& name, double value
                                 "' (E_user, E_vel, E_fail, E_head, E_posture, effort)");
 }
 
-int run(cli c) {
-  const floating_model m = wang2012_humanoid();
-  const auto units = musculotendon::geyer_herr_leg_muscles(m);
+/// Geyer & Herr's MTUs with F_max scaled per --weaken (a name without side, "GAS", weakens both
+/// legs' units; a full one, "lGAS", one).
+std::vector<musculotendon::unit> weakened_muscles(const floating_model& m,
+                                                  const std::map<std::string, double>& weaken) {
+  auto units = musculotendon::geyer_herr_leg_muscles(m);
+  for (const auto& [name, f] : weaken) {
+    check_argument(std::isfinite(f) && f > 0.0, "--weaken ", name, ": must be finite and > 0, got ",
+                   f);
+    int hit = 0;
+    for (auto& u : units)
+      if (u.name == name || u.name.substr(1) == name) {
+        u.parameters.max_isometric_force *= f;
+        ++hit;
+      }
+    check_argument(hit > 0, "--weaken: no MTU named '", name,
+                   "' (GLU, HFL, VAS, TA, SOL, HAM, RF, GAS)");
+  }
+  return units;
+}
+
+/// The optimization (unless replaying), its check and summary for one effort term J_M (its type
+/// fixes the objective's, so each --effort is its own instantiation).
+template <class MetabolicTerm>
+int run_with(const cli& c, const floating_model& m, const std::vector<musculotendon::unit>& units,
+             const std::vector<double>& x0, double speed, MetabolicTerm j_m, double w_m) {
   const musculotendon_actuator act(units);
   const wang2012_reflex_controller ctrl(m);
-  std::vector<double> x0 = wang2012_reflex_controller::initial_parameters(m);
-  double speed = c.speed;
-  if (!c.init.empty() || !c.replay.empty()) {
-    const wang2012_saved_controller s =
-        load_wang2012_controller(c.replay.empty() ? c.init : c.replay);
-    x0 = s.parameters;
-    if (!c.replay.empty()) speed = s.target_speed;
-    // A replay is scored with the weights it was optimized with, unless told otherwise.
-    if (!c.replay.empty() && c.weights.empty())
-      c.weights = s.info.value("weights", std::map<std::string, double>{});
-  }
   wang2012::objective_options oo{.target_speed = speed};
+  oo.effort.metabolic = w_m;
   for (const auto& [t, w] : c.weights) set_weight(oo.weights, t, w);
-  const auto obj = wang2012::objective(m, units, wang2012::metabolic_energy(units), oo);
+  const auto obj = wang2012::objective(m, units, std::move(j_m), oo);
   rollout_options opt = wang2009_rollout_options(m);  // 2400 Hz, the Wang 2009 contact
   const rollout_problem prob{m, act, ctrl, obj, flat_terrain{}, semi_implicit_euler{}, opt};
   const std::string stem = (c.out / "wang2012_walk").string();
@@ -177,6 +225,8 @@ int run(cli c) {
     s.parameters.assign(x.data(), x.data() + x.size());
     s.info["command"] = c.command;
     s.info["weights"] = c.weights;
+    s.info["effort"] = c.effort;
+    if (!c.weaken.empty()) s.info["weaken"] = c.weaken;
     save_wang2012_controller(stem + ".controller.json", s);
   };
   // CMA-ES on `problem`'s cost at the horizon (the paper's problem, or one with robust variants).
@@ -208,17 +258,16 @@ int run(cli c) {
     save(best, best_cost);
   };
   if (c.replay.empty()) {
-    if (c.robust_starts == 0) {
+    if (c.robust_starts == 0 && c.robust_pushes == 0) {
       optimize(prob);
     } else {
       // Seeded apart from the check's starts (2012 below), so the check judges unseen starts.
-      std::vector<std::decay_t<decltype(prob)>> variants;
-      for (const Eigen::VectorXd& dv :
-           joint_velocity_perturbations(m, c.robust_starts, c.start_sigma, 1000 + c.seed)) {
-        auto v = prob;
-        v.options.initial_velocity_offset = dv;
-        variants.push_back(v);
-      }
+      auto variants = robust_variants(prob, {.starts = c.robust_starts,
+                                             .start_sigma = c.start_sigma,
+                                             .seed = 1000 + c.seed,
+                                             .pushes = c.robust_pushes,
+                                             .push_force = c.push_force,
+                                             .horizon = c.horizon});
       optimize(make_problem_with_variants(prob, std::move(variants)));
     }
   }
@@ -230,8 +279,10 @@ int run(cli c) {
   check.duration = c.check_seconds;
   auto scratch = make_rollout_scratch(m);
   const std::span<const double> bx(best.data(), static_cast<std::size_t>(best.size()));
-  const rollout_result r = rollout(m, act, prob.controller_with(best), obj, flat_terrain{},
-                                   semi_implicit_euler{}, bx, check, scratch);
+  muscle_recording muscles;
+  const rollout_result r =
+      rollout(m, act, prob.controller_with(best), obj, flat_terrain{}, semi_implicit_euler{}, bx,
+              check, scratch, musculotendon_recorder(act, &muscles, check.record_every));
   save_csv(stem + ".csv", tr);
   // Gait cycles of the left leg (after the first 2 s): hip, knee and ankle angles and torques per
   // kg, against the adult data of data/normative_gait/ with their standard scores.
@@ -257,6 +308,32 @@ int run(cli c) {
                             .mean = h.mean,
                             .sd = h.sd});
       if (g.num_cycles() >= 1) scores[channels[k].label] = standard_score(g.percent, g.mean[k], h);
+    }
+  }
+  nlohmann::json gas = nlohmann::json::object();
+  if (!tr.frames.empty() && tr.frames.back().t > 4.0) {
+    // Figure 5: the left GAS over the gait cycle (after the first 2 s), and where its activation
+    // peaks against where its fiber shortens fastest.
+    trajectory steady = tr;
+    std::erase_if(steady.frames, [](const trajectory_frame& f) { return f.t < 2.0; });
+    gait_plot_options gp;
+    gp.cycles.channels = muscle_gait_channels(muscles, "lGAS");
+    gp.cycles.samples = 101;
+    gp.show_cycles = true;
+    gp.title = "Wang et al. 2012, Figure 5: left GAS over the gait cycle";
+    const gait_cycle_data g = gait_cycles(m, steady, gp.cycles);
+    if (g.num_cycles() >= 1) {
+      const auto& a = g.mean[1];
+      const auto peak = std::max_element(a.begin(), a.end()) - a.begin();
+      gas["peak_activation"] = a[static_cast<std::size_t>(peak)];
+      gas["peak_activation_percent"] = g.percent[static_cast<std::size_t>(peak)];
+      gas["peak_force"] = *std::max_element(g.mean[2].begin(), g.mean[2].end());
+      gas["cycles"] = g.num_cycles();
+    }
+    if (!c.muscle_svg.empty()) {
+      std::ostringstream os;
+      write_gait_plot_svg(g, os, gp, m.name);
+      viz_detail::save_text(c.muscle_svg, os.str(), "--muscle-svg");
     }
   }
   if (c.viz.any()) {
@@ -290,10 +367,36 @@ int run(cli c) {
   sum["target_speed"] = speed;
   sum["perturbed_starts_walked"] = walking;
   sum["standard_scores"] = scores;
+  sum["gas"] = gas;
   sum["evaluations"] = res.evaluations;
   sum["iterations"] = res.iterations;
   example_cli::report_summary(sum, c.out);
   return 0;
+}
+
+int run(cli c) {
+  const floating_model m = wang2012_humanoid();
+  std::vector<double> x0 = wang2012_reflex_controller::initial_parameters(m);
+  double speed = c.speed;
+  if (!c.init.empty() || !c.replay.empty()) {
+    const wang2012_saved_controller s =
+        load_wang2012_controller(c.replay.empty() ? c.init : c.replay);
+    x0 = s.parameters;
+    if (!c.replay.empty()) {
+      // A replay is judged by the problem it was optimized for, unless told otherwise.
+      speed = s.target_speed;
+      if (c.weights.empty()) c.weights = s.info.value("weights", std::map<std::string, double>{});
+      if (c.effort.empty()) c.effort = s.info.value("effort", std::string());
+      if (c.weaken.empty()) c.weaken = s.info.value("weaken", std::map<std::string, double>{});
+    }
+  }
+  if (c.effort.empty()) c.effort = "metabolic";
+  const auto units = weakened_muscles(m, c.weaken);
+  if (c.effort == "torque")  // min_torque, w_M = 5 (Sec. 6.2)
+    return run_with(c, m, units, x0, speed, wang2012::sagittal_joint_torque(units), 5.0);
+  if (c.effort == "activation")  // min_act, w_M = 60000 (Sec. 6.2)
+    return run_with(c, m, units, x0, speed, wang2012::mean_squared_activation{}, 60000.0);
+  return run_with(c, m, units, x0, speed, wang2012::metabolic_energy(units), 100.0);
 }
 
 }  // namespace

@@ -49,6 +49,14 @@ case "$mode" in
       if grep -q -- "--seed" <<<"$help"; then
         expect 2 "--seed: must be in .*, got -3" -- "$exe" --seed -3
       fi
+      if grep -q -- "--weaken" <<<"$help"; then
+        expect 2 "--effort: .*metabolism" -- "$exe" --effort metabolism
+        expect 2 "--weaken: wants NAME=VALUE, got 'GAS'" -- "$exe" --weaken GAS
+        expect 1 "no MTU named 'QUAD'" -- "$exe" --weaken QUAD=0.5 --iterations 0 --horizon 0.01 \
+          --check-seconds 0.01 --out "${TMPDIR:-/tmp}/gaitsynth_cli_weaken"
+        expect 1 "--weaken GAS: must be finite and > 0, got 0" -- "$exe" --weaken GAS=0 \
+          --iterations 0 --horizon 0.01 --check-seconds 0.01 --out "${TMPDIR:-/tmp}/gaitsynth_cli_weaken"
+      fi
       if grep -q -- "--html" <<<"$help"; then
         expect 2 "--html" -- "$exe" --html
       fi

@@ -4,7 +4,9 @@
 /// none touching to at least one touching), sagittal angle channels (a joint angle, a segment's
 /// pitch in the world, or the pitch between two segments) and their curves against percent of the
 /// gait cycle, averaged over cycles with their spread, as in Wang et al. 2009, Figure 6; and joint
-/// torque channels for torque curves (Wang et al. 2012, Figure 7).
+/// torque channels for torque curves (Wang et al. 2012, Figure 7); and recorded channels, a series
+/// the caller recorded beside the trajectory (a muscle's activation: Wang et al. 2012, Figure 5;
+/// analysis/muscle_recording.hpp records them), interpolated at the frames' times.
 /// gait_plot_svg.hpp draws them; the HTML player uses the heel strikes for its cycle plots.
 #include <Eigen/Core>
 #include <Eigen/Geometry>
@@ -21,13 +23,15 @@
 
 namespace gaitsynth {
 
-/// One curve of a gait plot: value = scale * angle + offset, angle in radians.
+/// One curve of a gait plot: value = scale * raw + offset, raw an angle in radians, a torque in
+/// N m, or a recorded value. scale defaults to degrees: set it (to 1) for the other kinds.
 struct gait_channel {
   enum class kind {
     joint_angle,     ///< the joint DOF `name` (its q value)
     segment_pitch,   ///< pitch of body `name` about world +y: atan2(R(0,2), R(2,2)) of R_world_body
     relative_pitch,  ///< pitch of body `name` relative to body `reference`: same on R_ref^T R_body
-    joint_torque     ///< the actuator's torque on joint DOF `name` (frame tau), N m
+    joint_torque,    ///< the actuator's torque on joint DOF `name` (frame tau), N m
+    recorded         ///< series_value at series_time, linearly interpolated (held beyond the ends)
   };
   kind type = kind::joint_angle;
   std::string label;      ///< panel title ("hip"); empty: `name`
@@ -36,6 +40,8 @@ struct gait_channel {
   double scale = 180.0 / std::numbers::pi;  ///< default: degrees
   double offset = 0.0;
   std::string unit = "deg";
+  std::vector<double> series_time;   ///< recorded only: s, strictly increasing
+  std::vector<double> series_value;  ///< recorded only: raw values at series_time
 };
 
 struct gait_cycle_options {
@@ -174,12 +180,42 @@ inline void unwrap(std::vector<double>& a) {
   }
 }
 
+/// Piecewise-linear y(t) through the points (t[i], y[i]) at x, held constant beyond the ends.
+inline double interpolate_series(const std::vector<double>& t, const std::vector<double>& y,
+                                 double x) {
+  if (!(x > t.front())) return y.front();  // (a NaN x gives the first value)
+  if (x >= t.back()) return y.back();
+  const std::size_t i =
+      static_cast<std::size_t>(std::upper_bound(t.begin(), t.end(), x) - t.begin());
+  const double w = (x - t[i - 1]) / (t[i] - t[i - 1]);
+  return (1 - w) * y[i - 1] + w * y[i];
+}
+
+/// Throws std::invalid_argument naming channel c unless its recorded series is usable.
+inline void check_recorded_series(const gait_channel& c) {
+  const std::string& who = c.label.empty() ? c.name : c.label;
+  check_argument(c.series_time.size() == c.series_value.size(), "gait channel '", who,
+                 "': ", c.series_time.size(), " series times but ", c.series_value.size(),
+                 " series values");
+  check_argument(!c.series_time.empty(), "gait channel '", who, "': the recorded series is empty");
+  for (std::size_t i = 1; i < c.series_time.size(); ++i)
+    check_argument(c.series_time[i] > c.series_time[i - 1], "gait channel '", who,
+                   "': series times must increase strictly, got ", c.series_time[i - 1], " then ",
+                   c.series_time[i], " s at sample ", i);
+  check_argument(std::isfinite(c.series_time.front()) && std::isfinite(c.series_time.back()),
+                 "gait channel '", who, "': series times must be finite");
+}
+
 /// Value of channel c (in its units) at every frame.
 template <root_joint Root>
 std::vector<double> channel_series(const model<Root>& m, const trajectory& traj,
                                    const gait_channel& c) {
   std::vector<double> out(traj.frames.size());
-  if (c.type == gait_channel::kind::joint_angle) {
+  if (c.type == gait_channel::kind::recorded) {
+    check_recorded_series(c);
+    for (std::size_t f = 0; f < traj.frames.size(); ++f)
+      out[f] = interpolate_series(c.series_time, c.series_value, traj.frames[f].t);
+  } else if (c.type == gait_channel::kind::joint_angle) {
     const int j = m.dof_index(c.name);
     for (std::size_t f = 0; f < traj.frames.size(); ++f) out[f] = traj.frames[f].q[Root::nq + j];
   } else if (c.type == gait_channel::kind::joint_torque) {
@@ -222,8 +258,8 @@ inline double interpolate_at(const trajectory& traj, const std::vector<double>& 
 }  // namespace viz_detail
 
 /// Gait-cycle curves of the trajectory (see gait_cycle_data). Throws std::invalid_argument for an
-/// unknown DOF / body / foot name or bad options; a trajectory with fewer than two heel strikes
-/// gives num_cycles() == 0 (not an error: a fall is worth plotting too).
+/// unknown DOF / body / foot name, a bad recorded series or bad options; a trajectory with fewer
+/// than two heel strikes gives num_cycles() == 0 (not an error: a fall is worth plotting too).
 template <root_joint Root>
 gait_cycle_data gait_cycles(const model<Root>& m, const trajectory& traj,
                             const gait_cycle_options& opt = {}) {

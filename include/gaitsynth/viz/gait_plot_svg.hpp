@@ -91,7 +91,8 @@ inline void write_gait_plot_svg(const gait_cycle_data& d, std::ostream& os,
     P.yhi = hi;
     const gait_channel& ch = d.channels[c];
     os << "<g class=\"panel\" id=\"panel-" << c << "\">\n";
-    P.draw_axes(os, "% gait cycle", ch.label + " (" + ch.unit + ")", ch.label);
+    P.draw_axes(os, "% gait cycle", ch.unit.empty() ? ch.label : ch.label + " (" + ch.unit + ")",
+                ch.label);
     for (const gait_reference& ref : opt.references) {
       if (ref.channel != c) continue;
       if (!ref.sd.empty()) {

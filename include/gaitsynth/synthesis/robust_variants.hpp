@@ -1,0 +1,78 @@
+#pragma once
+/// \file synthesis/robust_variants.hpp
+/// The perturbed copies of a rollout problem that a robust optimization scores each candidate on
+/// beside the problem itself (make_problem_with_variants): `starts` copies whose joint velocities
+/// start perturbed by a seeded N(0, start_sigma^2) (rollout/start_perturbations.hpp), then
+/// `pushes` copies pushed on one body for push_duration every push_period seconds from
+/// first_push, with push_force newtons in the eight horizontal directions of Wang et al. 2009
+/// Table 1 (variant k starting at direction k, each later push turning one direction on), as far
+/// as the horizon allows. Every candidate meets the same perturbations, so the cost stays a
+/// deterministic function of the parameters whatever the thread count.
+///
+/// The robust stages of the Wang 2009 and Wang 2012 walkers (examples/wang2009_walk.cpp,
+/// examples/wang2012_walk.cpp) use it; seed them apart from a claim test's perturbations, so the
+/// test judges starts the optimization never saw.
+#include <cmath>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "gaitsynth/error.hpp"
+#include "gaitsynth/rollout/push_test.hpp"
+#include "gaitsynth/rollout/start_perturbations.hpp"
+
+namespace gaitsynth {
+
+struct robust_variant_options {
+  int starts = 0;             ///< copies from perturbed starts
+  double start_sigma = 0.05;  ///< rad/s (the claim tests' perturbation)
+  std::uint64_t seed = 1001;  ///< of the start perturbations
+  int pushes = 0;             ///< copies with pushes
+  double push_force = 100.0;  ///< N
+  std::string push_body = "torso";
+  double first_push = 2.0;     ///< s
+  double push_period = 3.0;    ///< s between push starts
+  double push_duration = 0.4;  ///< s (Wang 2009 Sec. 5, Wang 2012 Sec. 6.4)
+  double horizon = 10.0;       ///< s: pushes that would not end before it are left out
+};
+
+/// The variants of `prob` (a rollout_problem: its `character` and `options` are read) that `o`
+/// asks for, starts first. Throws std::invalid_argument for a negative count, a non-finite or
+/// negative sigma, force or time, a non-positive period or duration, or an unknown body.
+template <class Problem>
+std::vector<Problem> robust_variants(const Problem& prob, const robust_variant_options& o) {
+  check_argument(o.starts >= 0 && o.pushes >= 0,
+                 "robust_variants: starts and pushes must be >= 0, got ", o.starts, " and ",
+                 o.pushes);
+  check_argument(std::isfinite(o.push_force) && o.push_force >= 0.0,
+                 "robust_variants: push_force must be finite and >= 0, got ", o.push_force);
+  check_argument(std::isfinite(o.first_push) && o.first_push >= 0.0,
+                 "robust_variants: first_push must be finite and >= 0, got ", o.first_push);
+  check_argument(std::isfinite(o.push_period) && o.push_period > 0.0,
+                 "robust_variants: push_period must be finite and > 0, got ", o.push_period);
+  check_argument(std::isfinite(o.push_duration) && o.push_duration > 0.0,
+                 "robust_variants: push_duration must be finite and > 0, got ", o.push_duration);
+  check_argument(std::isfinite(o.horizon) && o.horizon > 0.0,
+                 "robust_variants: horizon must be finite and > 0, got ", o.horizon);
+  std::vector<Problem> out;
+  for (const Eigen::VectorXd& dv :
+       joint_velocity_perturbations(prob.character, o.starts, o.start_sigma, o.seed)) {
+    Problem v = prob;
+    v.options.initial_velocity_offset = dv;
+    out.push_back(std::move(v));
+  }
+  if (o.pushes == 0) return out;
+  const int body = prob.character.body_index(o.push_body);  // throws naming an unknown body
+  for (int k = 0; k < o.pushes; ++k) {
+    Problem v = prob;
+    for (int i = 0; o.first_push + o.push_period * i + o.push_duration < o.horizon; ++i) {
+      const vec3 d = table1_directions()[static_cast<std::size_t>((k + i) % 8)];
+      v.options.pushes.push_back(
+          push{body, o.push_force * d, o.first_push + o.push_period * i, o.push_duration});
+    }
+    out.push_back(std::move(v));
+  }
+  return out;
+}
+
+}  // namespace gaitsynth

@@ -1,0 +1,87 @@
+// robust_variants (synthesis/robust_variants.hpp): the perturbed copies of a problem that a robust
+// optimization scores each candidate on. Starts carry the seeded offsets of
+// joint_velocity_perturbations (so a claim test seeded apart sees other starts), pushes follow the
+// documented schedule in Table 1's directions, nothing else of the problem changes, and bad
+// options are refused naming the value.
+#include <catch2/catch.hpp>
+
+#include <cmath>
+
+#include "gaitsynth/actuators/pd.hpp"
+#include "gaitsynth/contact/flat_terrain.hpp"
+#include "gaitsynth/controllers/pose_hold.hpp"
+#include "gaitsynth/integrators/semi_implicit_euler.hpp"
+#include "gaitsynth/models/wang2009.hpp"
+#include "gaitsynth/objectives/distance.hpp"
+#include "gaitsynth/rollout/problem.hpp"
+#include "gaitsynth/synthesis/robust_variants.hpp"
+
+using namespace gaitsynth;
+
+namespace {
+
+auto standing_problem(const floating_model& m) {
+  rollout_options ro;
+  ro.pushes.push_back(push{0, vec3(0, 0, 5), 0.5, 0.1});  // the problem's own push is kept
+  return rollout_problem{m,
+                         pd_actuator::uniform(m, 300, 30),
+                         pose_hold(m),
+                         distance_travelled{},
+                         flat_terrain{},
+                         semi_implicit_euler{},
+                         ro};
+}
+
+}  // namespace
+
+TEST_CASE("robust_variants: seeded starts, then pushes on the documented schedule") {
+  const floating_model m = wang2009_humanoid();
+  const auto prob = standing_problem(m);
+  const auto v = robust_variants(prob, {.starts = 3,
+                                        .start_sigma = 0.05,
+                                        .seed = 1001,
+                                        .pushes = 2,
+                                        .push_force = 80.0,
+                                        .horizon = 10.0});
+  REQUIRE(v.size() == 5);
+  const auto offsets = joint_velocity_perturbations(m, 3, 0.05, 1001);
+  for (int k = 0; k < 3; ++k) {
+    CHECK(v[k].options.initial_velocity_offset == offsets[k]);
+    CHECK(v[k].options.pushes.size() == 1);  // only the problem's own
+  }
+  CHECK(offsets[0] != offsets[1]);
+  const int torso = m.body_index("torso");
+  for (int k = 0; k < 2; ++k) {
+    const auto& o = v[3 + k].options;
+    CHECK(o.initial_velocity_offset.size() == prob.options.initial_velocity_offset.size());
+    // The problem's push, then pushes at 2, 5, 8 s (8.4 < 10; 11 s would pass the horizon).
+    REQUIRE(o.pushes.size() == 4);
+    for (int i = 0; i < 3; ++i) {
+      const push& p = o.pushes[1 + i];
+      CHECK(p.body == torso);
+      CHECK(p.start == Approx(2.0 + 3.0 * i));
+      CHECK(p.duration == 0.4);
+      CHECK((p.force - 80.0 * table1_directions()[(k + i) % 8]).norm() == 0.0);
+    }
+  }
+  // A horizon shorter than the first push's end leaves push variants unpushed.
+  const auto w = robust_variants(prob, {.pushes = 1, .horizon = 2.3});
+  REQUIRE(w.size() == 1);
+  CHECK(w[0].options.pushes.size() == 1);
+  CHECK(robust_variants(prob, {}).empty());
+}
+
+TEST_CASE("robust_variants: bad options are refused naming the value") {
+  const floating_model m = wang2009_humanoid();
+  const auto prob = standing_problem(m);
+  CHECK_THROWS_WITH(robust_variants(prob, {.starts = -1}), Catch::Contains("-1"));
+  CHECK_THROWS_WITH(robust_variants(prob, {.starts = 1, .start_sigma = -0.1}),
+                    Catch::Contains("sigma") && Catch::Contains("-0.1"));
+  CHECK_THROWS_WITH(robust_variants(prob, {.pushes = 1, .push_force = std::nan("")}),
+                    Catch::Contains("push_force") && Catch::Contains("nan"));
+  CHECK_THROWS_WITH(robust_variants(prob, {.pushes = 1, .push_period = 0.0}),
+                    Catch::Contains("push_period"));
+  CHECK_THROWS_WITH(robust_variants(prob, {.pushes = 1, .push_body = "tail"}),
+                    Catch::Contains("tail"));
+  CHECK_THROWS_WITH(robust_variants(prob, {.horizon = -1.0}), Catch::Contains("horizon"));
+}
