@@ -31,8 +31,8 @@
 #include <filesystem>
 #include <iostream>
 #include <map>
-#include <sstream>
 #include <nlohmann/json.hpp>
+#include <sstream>
 #include <string>
 #include <type_traits>
 #include <vector>
@@ -181,23 +181,11 @@ void set_weight(wang2012::task_weights& w, const std::string& name, double value
                                 "' (E_user, E_vel, E_fail, E_head, E_posture, effort)");
 }
 
-/// Geyer & Herr's MTUs with F_max scaled per --weaken (a name without side, "GAS", weakens both
-/// legs' units; a full one, "lGAS", one).
+/// Geyer & Herr's MTUs with F_max scaled per --weaken ("GAS": both legs' units; "lGAS": one).
 std::vector<musculotendon::unit> weakened_muscles(const floating_model& m,
                                                   const std::map<std::string, double>& weaken) {
   auto units = musculotendon::geyer_herr_leg_muscles(m);
-  for (const auto& [name, f] : weaken) {
-    check_argument(std::isfinite(f) && f > 0.0, "--weaken ", name, ": must be finite and > 0, got ",
-                   f);
-    int hit = 0;
-    for (auto& u : units)
-      if (u.name == name || u.name.substr(1) == name) {
-        u.parameters.max_isometric_force *= f;
-        ++hit;
-      }
-    check_argument(hit > 0, "--weaken: no MTU named '", name,
-                   "' (GLU, HFL, VAS, TA, SOL, HAM, RF, GAS)");
-  }
+  for (const auto& [name, f] : weaken) musculotendon::scale_max_isometric_force(units, name, f);
   return units;
 }
 

@@ -212,3 +212,27 @@ TEST_CASE("bad musculotendon input is refused naming the MTU and the value",
   s.q[floating_root::nq + m.dof_index("lknee")] = -1.0;  // hyperextended: VAS shortest
   CHECK_THROWS_WITH(short_mtu.start(m, s, st), Contains("lVAS"));
 }
+
+TEST_CASE("scale_max_isometric_force weakens one MTU in both legs, or one leg's, and nothing else",
+          "[actuators][musculotendon]") {
+  const auto m = wang2012_humanoid();
+  const auto base = musculotendon::geyer_herr_leg_muscles(m);
+  auto weak = base;
+  musculotendon::scale_max_isometric_force(weak, "GAS", 0.25);
+  musculotendon::scale_max_isometric_force(weak, "rVAS", 0.1);
+  REQUIRE(weak.size() == base.size());
+  for (std::size_t i = 0; i < base.size(); ++i) {
+    INFO(base[i].name);
+    const double f = base[i].name == "lGAS" || base[i].name == "rGAS" ? 0.25
+                     : base[i].name == "rVAS"                         ? 0.1
+                                                                      : 1.0;
+    CHECK(weak[i].parameters.max_isometric_force == base[i].parameters.max_isometric_force * f);
+    CHECK(weak[i].parameters.optimal_fiber_length == base[i].parameters.optimal_fiber_length);
+  }
+  CHECK_THROWS_WITH(musculotendon::scale_max_isometric_force(weak, "QUAD", 0.5),
+                    Contains("'QUAD'") && Contains("lGLU"));
+  CHECK_THROWS_WITH(musculotendon::scale_max_isometric_force(weak, "GAS", -1.0),
+                    Contains("'GAS'") && Contains("-1"));
+  CHECK_THROWS_WITH(musculotendon::scale_max_isometric_force(weak, "GAS", std::nan("")),
+                    Contains("nan"));
+}

@@ -54,7 +54,7 @@ case "$mode" in
         expect 2 "--weaken: wants NAME=VALUE, got 'GAS'" -- "$exe" --weaken GAS
         expect 1 "no MTU named 'QUAD'" -- "$exe" --weaken QUAD=0.5 --iterations 0 --horizon 0.01 \
           --check-seconds 0.01 --out "${TMPDIR:-/tmp}/gaitsynth_cli_weaken"
-        expect 1 "--weaken GAS: must be finite and > 0, got 0" -- "$exe" --weaken GAS=0 \
+        expect 1 "factor for 'GAS' must be finite and > 0, got 0" -- "$exe" --weaken GAS=0 \
           --iterations 0 --horizon 0.01 --check-seconds 0.01 --out "${TMPDIR:-/tmp}/gaitsynth_cli_weaken"
       fi
       if grep -q -- "--html" <<<"$help"; then

@@ -15,6 +15,7 @@
 #include <catch2/catch.hpp>
 
 #include <cmath>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -45,9 +46,13 @@ struct reported {
 void check_walker(const reported& w) {
   const std::string path = std::string(GAITSYNTH_SOURCE_DIR) + "/data/wang2012/walkers/" + w.file;
   const floating_model m = wang2012_humanoid();
-  const musculotendon_actuator act(musculotendon::geyer_herr_leg_muscles(m));
-  const wang2012_reflex_controller c(m);
   const wang2012_saved_controller saved = load_wang2012_controller(path);
+  // A weakened walker (Sec. 6.2) walks with the muscles it was optimized with.
+  auto units = musculotendon::geyer_herr_leg_muscles(m);
+  for (const auto& [name, f] : saved.info.value("weaken", std::map<std::string, double>{}))
+    musculotendon::scale_max_isometric_force(units, name, f);
+  const musculotendon_actuator act(units);
+  const wang2012_reflex_controller c(m);
   const std::span<const double> p(saved.parameters);
   rollout_options opt = wang2009_rollout_options(m);  // as examples/wang2012_walk.cpp
   auto scratch = make_rollout_scratch(m);

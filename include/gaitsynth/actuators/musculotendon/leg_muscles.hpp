@@ -11,11 +11,14 @@
 /// The model's DOFs map to Geyer & Herr's angles (path.hpp) as for the humanoids of
 /// models/wang2009.hpp and models/wang2012.hpp: hip_y + = extension (phi = 180 deg + q), knee + =
 /// flexion (phi = 180 deg - q), ankle_y + = plantarflexion (phi = 90 deg + q).
+#include <cmath>
 #include <numbers>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
 #include "gaitsynth/actuators/musculotendon/unit.hpp"
+#include "gaitsynth/error.hpp"
 #include "gaitsynth/model/model.hpp"
 
 namespace gaitsynth::musculotendon {
@@ -89,6 +92,28 @@ std::vector<unit> geyer_herr_leg_muscles(const model<Root>& m, const leg_dof_nam
         ankle_x(+1, 0.05, 110.0, 80.0, 0.7));
   }
   return out;
+}
+
+/// Weakens (factor < 1) or strengthens the MTUs named `name`: their F_max times factor (Wang et al.
+/// 2012 Sec. 6.2 weaken GAS and SOL to 1/4, HAM to 1/4, VAS to 1/10). A name without its side
+/// prefix ("GAS") scales the unit in both legs; a full one ("lGAS") that unit alone. Throws
+/// std::invalid_argument naming a factor that is not finite and positive, or a name no unit has.
+inline void scale_max_isometric_force(std::vector<unit>& units, const std::string& name,
+                                      double factor) {
+  check_argument(std::isfinite(factor) && factor > 0.0, "scale_max_isometric_force: factor for '",
+                 name, "' must be finite and > 0, got ", factor);
+  int hit = 0;
+  for (unit& u : units)
+    if (u.name == name || (u.name.size() > 1 && u.name.substr(1) == name)) {
+      u.parameters.max_isometric_force *= factor;
+      ++hit;
+    }
+  if (hit == 0) {
+    std::string names;
+    for (const unit& u : units) names += (names.empty() ? "" : ", ") + u.name;
+    throw std::invalid_argument("scale_max_isometric_force: no MTU named '" + name + "' (" + names +
+                                ")");
+  }
 }
 
 }  // namespace gaitsynth::musculotendon
