@@ -47,8 +47,13 @@ struct pd_actuator {
       : kp(std::move(kp_)), kd(std::move(kd_)), feedforward(feedforward_) {}
 
   /// The same gains at every joint DOF of m.
+  /// \throws std::invalid_argument naming a gain that is not finite and >= 0.
   template <root_joint Root>
   static pd_actuator uniform(const model<Root>& m, double kp, double kd, bool feedforward = false) {
+    check_argument(std::isfinite(kp) && kp >= 0.0,
+                   "pd_actuator::uniform: kp must be finite and >= 0, got ", kp);
+    check_argument(std::isfinite(kd) && kd >= 0.0,
+                   "pd_actuator::uniform: kd must be finite and >= 0, got ", kd);
     const int nj = m.num_joint_dofs();
     return pd_actuator(Eigen::VectorXd::Constant(nj, kp), Eigen::VectorXd::Constant(nj, kd),
                        feedforward);

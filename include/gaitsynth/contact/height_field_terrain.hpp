@@ -14,7 +14,9 @@
 ///   n = (-dh/dx, -dh/dy, 1) / |(-dh/dx, -dh/dy, 1)|
 ///
 /// Outside the grid the query point is clamped to it, so the field continues as the (constant)
-/// edge profile and the gradient across the edge is zero. A grid with a single node along an axis
+/// edge profile and the gradient across the edge is zero (no exception: queries are on the step
+/// loop's hot path; the inputs are checked once, in the constructor). A NaN coordinate reads as the
+/// first node along its axis, +-inf as the edge. A grid with a single node along an axis
 /// is constant along that axis (nx x 1 is a 2D profile for planar models, which query y = 0).
 /// Points on a cell boundary use the cell above them (the last node row uses the last cell); the
 /// gradient is discontinuous there, as it is for any bilinear surface.

@@ -93,7 +93,7 @@ template <class MakeOptimizer, class MakeObjective, class E, class Callback = no
 continuation_result continuation(std::size_t num_stages, const Eigen::VectorXd& x0,
                                  MakeOptimizer&& make_optimizer, MakeObjective&& make_objective,
                                  E&& eval, const run_options& ro = {}, Callback&& callback = {}) {
-  check_argument(num_stages > 0, "continuation: num_stages must be > 0");
+  check_argument(num_stages > 0, "continuation: num_stages must be > 0, got ", num_stages);
   check_finite(x0, "continuation x0");
   continuation_result out;
   const bool ckpt = !ro.checkpoint_file.empty();

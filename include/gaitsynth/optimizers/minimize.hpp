@@ -134,6 +134,12 @@ optimization_result minimize(O&& opt, F&& objective, E&& eval, const run_options
   const auto t0 = clock::now();
   auto elapsed = [&] { return std::chrono::duration<double>(clock::now() - t0).count(); };
   optimization_result result;
+  check_argument(ro.checkpoint_every >= 0, "run_options::checkpoint_every must be >= 0, got ",
+                 ro.checkpoint_every);
+  check_argument(ro.progress_interval >= 0.0,
+                 "run_options::progress_interval must be >= 0 s (inf: first and last lines only), "
+                 "got ",
+                 ro.progress_interval);
 
   if (ro.resume && !ro.checkpoint_file.empty() && std::filesystem::exists(ro.checkpoint_file)) {
     load_checkpoint(opt, ro.checkpoint_file);

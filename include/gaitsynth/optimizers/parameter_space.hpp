@@ -48,7 +48,8 @@ class parameter_space {
 
   /// Validates every parameter: names unique and non-empty, bounds not NaN, lower < upper,
   /// initial value finite and within the bounds, scale finite and >= 0, logarithmic scaling only on
-  /// 0 < lower < upper < inf. Throws std::invalid_argument naming the parameter and the value.
+  /// 0 < lower < upper < inf, a finite upper - lower where it is the scale. Throws
+  /// std::invalid_argument naming the parameter and the value.
   explicit parameter_space(std::vector<parameter_spec> params) {
     for (auto& p : params) add(std::move(p));
   }
@@ -86,6 +87,8 @@ class parameter_space {
       const bool both = std::isfinite(p.lower) && std::isfinite(p.upper);
       m.offset = std::isfinite(p.lower) ? p.lower : 0.0;
       m.scale = p.scale > 0.0 ? p.scale : (both ? p.upper - p.lower : 1.0);
+      check_argument(std::isfinite(m.scale), label, ": the bounds' range upper - lower overflows (",
+                     p.lower, ", ", p.upper, "); give a finite scale");
       m.lower = std::isfinite(p.lower) ? (p.lower - m.offset) / m.scale : p.lower;
       m.upper = std::isfinite(p.upper) ? (p.upper - m.offset) / m.scale : p.upper;
       if (both && p.scale == 0.0) m.upper = 1.0;  // exact, not (upper - lower) / (upper - lower)

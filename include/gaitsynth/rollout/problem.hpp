@@ -181,6 +181,8 @@ struct rollout_problem {
                           context_type& ctx, trajectory* record, int record_every,
                           Observer&& observer) const {
     check_parameter_vector(x);
+    check_argument(std::isfinite(horizon) && horizon >= 0.0,
+                   "rollout_problem: horizon must be finite and >= 0 s, got ", horizon);
     rollout_options& o = ctx.options;
     o.initial_state.t = s.t;  // same sizes after the first call: no allocation
     o.initial_state.q = s.q;

@@ -60,6 +60,18 @@ push_trial push_trial_run(const model<Root>& m, const Actuator& act, const Contr
                           const vec3& force, const push_protocol& proto = {}) {
   check_positive(proto.duration, "push_protocol::duration (s)");
   check_positive(proto.period, "push_protocol::period (s)");
+  check_argument(proto.duration / proto.period < 1e6,
+                 "push_protocol: duration / period must be < 1e6 pushes, got ", proto.duration,
+                 " s / ", proto.period, " s");
+  check_argument(std::isfinite(proto.push_duration) && proto.push_duration >= 0.0,
+                 "push_protocol::push_duration must be finite and >= 0 s, got ",
+                 proto.push_duration);
+  check_argument(std::isfinite(proto.min_forward_speed),
+                 "push_protocol::min_forward_speed must be finite, got ", proto.min_forward_speed);
+  check_argument(body >= 0 && body < m.num_bodies(), "push_trial_run: body ", body,
+                 " is not a body of model '", m.name, "' (", m.num_bodies(), " bodies)");
+  check_argument(force.allFinite(), "push_trial_run: force (", force.transpose(),
+                 ") is not finite");
   const int count = static_cast<int>(std::floor((proto.duration - 1e-9) / proto.period));
   const double t0 = opt.initial_state.q.size() > 0 ? opt.initial_state.t : 0.0;
   for (const push& p :
@@ -91,6 +103,13 @@ double max_push_force(const model<Root>& m, const Actuator& act, const Controlle
                       std::span<const double> params, const rollout_options& opt, int body,
                       const vec3& direction, const push_protocol& proto = {}) {
   check_positive(proto.resolution, "push_protocol::resolution (N)");
+  check_argument(std::isfinite(proto.max_force) && proto.max_force >= 0.0,
+                 "push_protocol::max_force must be finite and >= 0 N, got ", proto.max_force);
+  check_argument(proto.max_force / proto.resolution < 1e6,
+                 "push_protocol: max_force / resolution must be < 1e6 trials, got ",
+                 proto.max_force, " N / ", proto.resolution, " N");
+  check_argument(direction.allFinite(), "max_push_force: direction (", direction.transpose(),
+                 ") is not finite");
   double survived = 0.0;
   for (double f = proto.resolution; f <= proto.max_force + 1e-9; f += proto.resolution) {
     if (!push_trial_run(m, act, ctrl, ground, integ, params, opt, body, vec3(f * direction), proto)

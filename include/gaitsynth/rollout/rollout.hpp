@@ -133,6 +133,8 @@ rollout_scratch<Root> make_rollout_scratch(const model<Root>& m) {
 template <root_joint Root, terrain T>
 void place_on_terrain(const model<Root>& m, const T& ground, Eigen::VectorXd& q) {
   static_assert(Root::nq > 0, "place_on_terrain needs a root that can move vertically");
+  check_size(q.size(), m.nq(), "place_on_terrain: q (generalized positions)");
+  check_finite(q, "place_on_terrain: q");
   auto ws = make_workspace(m);
   forward_kinematics(m, ws, q);
   double gap = std::numeric_limits<double>::infinity();
@@ -202,6 +204,11 @@ rollout_result rollout_impl(const model<Root>& m, const Actuator& act, C& ctrl,
   check_argument(std::isfinite(opt.stall.min_progress),
                  "rollout_options::stall.min_progress must be finite, got ",
                  opt.stall.min_progress);
+  // The horizon in steps must be a count the loop can reach (an int64; a rollout of 1e15 steps
+  // would not end anyway): a tiny dt or a huge duration is refused here, not overflowed.
+  check_argument(opt.duration / opt.dt < 1e15,
+                 "rollout_options: duration / dt must be < 1e15 steps, got ", opt.duration, " s / ",
+                 opt.dt, " s = ", opt.duration / opt.dt, " steps");
   const double dt = opt.dt;
   ctrl.bind(params);
   const double period = static_cast<double>(ctrl.period());

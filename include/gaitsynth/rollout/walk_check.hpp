@@ -9,7 +9,9 @@
 ///   if (walked(r, walk_criteria{})) ...
 ///   const walk_check w = check_walk(problem, x, 100.0);         // the same through a problem
 #include <Eigen/Core>
+#include <cmath>
 
+#include "gaitsynth/error.hpp"
 #include "gaitsynth/rollout/options.hpp"
 #include "gaitsynth/rollout/result.hpp"
 #include "gaitsynth/rollout/termination.hpp"
@@ -31,7 +33,10 @@ inline rollout_options walk_options(rollout_options o, const walk_criteria& c = 
 }
 
 /// Whether r (a rollout run with walk_options(..., c)) walked by criteria c.
+/// \throws std::invalid_argument for a non-finite c.min_average_speed (nothing would walk).
 inline bool walked(const rollout_result& r, const walk_criteria& c = {}) {
+  check_argument(std::isfinite(c.min_average_speed),
+                 "walk_criteria::min_average_speed must be finite, got ", c.min_average_speed);
   if (r.reason != stop_reason::horizon || !(r.time > 0.0)) return false;
   return (r.com_final.x() - r.com_initial.x()) / r.time >= c.min_average_speed;
 }
@@ -77,6 +82,10 @@ template <class Problem>
 walk_check check_walk(const Problem& prob, const Eigen::VectorXd& x, double seconds = 70.0,
                       trajectory* record = nullptr, int record_every = 40,
                       const walk_criteria& c = {}) {
+  check_argument(std::isfinite(seconds) && seconds >= 0.0,
+                 "check_walk: seconds must be finite and >= 0 s, got ", seconds);
+  check_argument(std::isfinite(c.min_average_speed),
+                 "walk_criteria::min_average_speed must be finite, got ", c.min_average_speed);
   if constexpr (requires { prob.main(); }) {
     // A problem with variants (rollout/problem_with_variants.hpp): the walk is the main problem's.
     return check_walk(prob.main(), x, seconds, record, record_every, c);

@@ -19,6 +19,7 @@
 #include "gaitsynth/contact/flat_terrain.hpp"
 #include "gaitsynth/contact/height_field_terrain.hpp"
 #include "gaitsynth/contact/terrain.hpp"
+#include "gaitsynth/error.hpp"
 #include "gaitsynth/models/sharon2005.hpp"
 #include "gaitsynth/motion/keyframes.hpp"
 #include "gaitsynth/rollout/rollout.hpp"
@@ -30,10 +31,22 @@ namespace gaitsynth::sharon_scenarios {
 /// seeded random phases and amplitudes, sampled every 5 cm and scaled so that its steepest gradient
 /// is exactly max_slope_deg (the paper gives only that); flat (and blended in over 1 m) before
 /// x = flat_until so that the walk starts on level ground. With the defaults the heights span about
-/// 5 to 8 cm.
+/// 5 to 8 cm. \throws std::invalid_argument naming a max_slope_deg outside [0, 90), wavelengths
+/// not 0 < min <= max, a length outside (0, 1e6] m, a non-finite flat_until, or a profile left
+/// flat over its whole length (nothing to scale).
 inline gaitsynth::height_field_terrain bumpy_terrain(
     double max_slope_deg = 11.0, std::uint64_t seed = 2005, double min_wavelength = 0.5,
     double max_wavelength = 2.0, double length = 120.0, double flat_until = 1.0) {
+  gaitsynth::check_argument(max_slope_deg >= 0.0 && max_slope_deg < 90.0,
+                            "bumpy_terrain: max_slope_deg must be in [0, 90), got ", max_slope_deg);
+  gaitsynth::check_argument(std::isfinite(min_wavelength) && std::isfinite(max_wavelength) &&
+                                min_wavelength > 0.0 && min_wavelength <= max_wavelength,
+                            "bumpy_terrain: need finite 0 < min_wavelength <= max_wavelength, got ",
+                            min_wavelength, " and ", max_wavelength);
+  gaitsynth::check_argument(length > 0.0 && length <= 1e6,
+                            "bumpy_terrain: length must be in (0, 1e6] m, got ", length);
+  gaitsynth::check_argument(std::isfinite(flat_until),
+                            "bumpy_terrain: flat_until must be finite, got ", flat_until);
   const double spacing = 0.05, x0 = -5.0;
   const int n = static_cast<int>(std::ceil(length / spacing)) + 1;
   std::mt19937_64 rng(seed);
@@ -57,6 +70,8 @@ inline gaitsynth::height_field_terrain bumpy_terrain(
   h.array() -= h(0, 0);
   double g = 0.0;
   for (int i = 1; i < n; ++i) g = std::max(g, std::abs(h(i, 0) - h(i - 1, 0)) / spacing);
+  gaitsynth::check_argument(g > 0.0, "bumpy_terrain: the profile is flat over its whole length (",
+                            length, " m from x = ", x0, "; flat_until = ", flat_until, ")");
   h *= std::tan(max_slope_deg * std::numbers::pi / 180.0) / g;
   return gaitsynth::height_field_terrain(Eigen::Vector2d(x0, 0.0), spacing, h);
 }
