@@ -98,3 +98,11 @@ TEST_CASE("wang2012: nwalk walks 100 s at 1.25 m/s, from 10 of 10 perturbed star
                 .speed_on_target = true,
                 .perturbed_walked = 10});
 }
+
+TEST_CASE("wang2012: fwalk walks 100 s at 1.5 m/s, from 10 of 10 perturbed starts",
+          "[wang2012][claim]") {
+  check_walker({.file = "fwalk.controller.json",
+                .speed = 1.5346,
+                .speed_on_target = true,
+                .perturbed_walked = 10});
+}
