@@ -40,6 +40,7 @@
 #include "command_line.hpp"
 #include "gaitsynth/actuators/musculotendon/leg_muscles.hpp"
 #include "gaitsynth/actuators/musculotendon_actuator.hpp"
+#include "gaitsynth/analysis/cycle_window.hpp"
 #include "gaitsynth/analysis/muscle_recording.hpp"
 #include "gaitsynth/analysis/standard_score.hpp"
 #include "gaitsynth/controllers/reflex/wang2012_json.hpp"
@@ -283,7 +284,7 @@ int run_with(const cli& c, const floating_model& m, const std::vector<musculoten
   go.channels = channels;
   go.samples = 100;
   std::vector<gait_reference> references;
-  nlohmann::json scores = nlohmann::json::object();
+  nlohmann::json scores = nlohmann::json::object(), features = nlohmann::json::object();
   if (!tr.frames.empty() && tr.frames.back().t > 4.0) {
     trajectory steady = tr;
     std::erase_if(steady.frames, [](const trajectory_frame& f) { return f.t < 2.0; });
@@ -296,6 +297,17 @@ int run_with(const cli& c, const floating_model& m, const std::vector<musculoten
                             .mean = h.mean,
                             .sd = h.sd});
       if (g.num_cycles() >= 1) scores[channels[k].label] = standard_score(g.percent, g.mean[k], h);
+    }
+    if (g.num_cycles() >= 1) {
+      // Sec. 6.2's comparisons (analysis/cycle_window.hpp), deg: channels 1 and 2 are the knee
+      // flexion and ankle dorsiflexion angles of human_sagittal_channels.
+      const auto knee_stance = cycle_window(g.percent, g.mean[1], gait_windows::mid_stance);
+      features["knee_flexion_mid_stance_min"] = knee_stance.min;
+      features["knee_flexion_mid_stance_mean"] = knee_stance.mean;
+      features["knee_flexion_swing_max"] =
+          cycle_window(g.percent, g.mean[1], gait_windows::swing).max;
+      features["ankle_dorsiflexion_terminal_swing_mean"] =
+          cycle_window(g.percent, g.mean[2], gait_windows::terminal_swing).mean;
     }
   }
   nlohmann::json gas = nlohmann::json::object();
@@ -356,6 +368,7 @@ int run_with(const cli& c, const floating_model& m, const std::vector<musculoten
   sum["perturbed_starts_walked"] = walking;
   sum["standard_scores"] = scores;
   sum["gas"] = gas;
+  sum["gait_features_deg"] = features;
   sum["evaluations"] = res.evaluations;
   sum["iterations"] = res.iterations;
   example_cli::report_summary(sum, c.out);
