@@ -106,3 +106,11 @@ TEST_CASE("wang2012: fwalk walks 100 s at 1.5 m/s, from 10 of 10 perturbed start
                 .speed_on_target = true,
                 .perturbed_walked = 10});
 }
+
+TEST_CASE("wang2012: swalk walks 100 s at 1.0 m/s, from 10 of 10 perturbed starts",
+          "[wang2012][claim]") {
+  check_walker({.file = "swalk.controller.json",
+                .speed = 0.9917,
+                .speed_on_target = true,
+                .perturbed_walked = 10});
+}
