@@ -114,3 +114,11 @@ TEST_CASE("wang2012: swalk walks 100 s at 1.0 m/s, from 10 of 10 perturbed start
                 .speed_on_target = true,
                 .perturbed_walked = 10});
 }
+
+TEST_CASE("wang2012: vwalk walks 100 s at 1.75 m/s, from 10 of 10 perturbed starts",
+          "[wang2012][claim]") {
+  check_walker({.file = "vwalk.controller.json",
+                .speed = 1.7424,
+                .speed_on_target = true,
+                .perturbed_walked = 10});
+}
