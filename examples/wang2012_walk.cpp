@@ -313,7 +313,7 @@ int run_with(const cli& c, const floating_model& m, const std::vector<musculoten
   nlohmann::json gas = nlohmann::json::object();
   if (!tr.frames.empty() && tr.frames.back().t > 4.0) {
     // Figure 5: the left GAS over the gait cycle (after the first 2 s), and where its activation
-    // peaks against where its fiber shortens fastest.
+    // peaks, how high, and its peak force.
     trajectory steady = tr;
     std::erase_if(steady.frames, [](const trajectory_frame& f) { return f.t < 2.0; });
     gait_plot_options gp;
