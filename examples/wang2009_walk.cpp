@@ -129,7 +129,9 @@ cli parse(int argc, char** argv) {
       ->check(example_cli::in_range(0.01, 10.0));
   app.add_option("--step-length", step_length, "target step length of E_user, m")
       ->check(example_cli::in_range(0.01, 3.0));
-  app.add_option("--iterations", c.iterations, "CMA-ES iterations (Sec. 4.3: 3000)")
+  app.add_option("--iterations", c.iterations,
+                 "CMA-ES iterations (Sec. 4.3: 3000; 0: no optimization, check the initial "
+                 "controller)")
       ->check(example_cli::integer_in(0, 10000000));
   example_cli::add_threads(app, c.threads);
   example_cli::add_seed(app, c.seed);
@@ -432,7 +434,7 @@ int optimize_and_check(const floating_model& m, const cli& c, const wang2009_con
     thread_pool_evaluator pool(c.threads);
     optimize_with(problem, pool);
   };
-  if (c.replay.empty()) {
+  if (c.replay.empty() && c.iterations > 0) {
     if (c.robust_starts == 0 && c.robust_pushes == 0) {
       optimize(prob);
     } else {

@@ -10,7 +10,7 @@
 //                 [--init FILE] [--horizon S] [--sigma S] [--population N] [--check-seconds S]
 //                 [--robust-starts K] [--start-sigma S] [--weight TERM=W]...
 //                 [--robust-pushes K] [--push-force N] [--effort metabolic|torque|activation]
-//                 [--weaken MTU=F]...
+//                 [--weaken MTU=F]... [--gait walk|run]
 //   wang2012_walk --resume DIR [--threads N]
 //   wang2012_walk --replay FILE [--check-seconds S] [--out DIR]
 //
@@ -21,7 +21,9 @@
 // robust walker of Sec. 6.4. --effort picks J_M: the metabolic energy, or the ablations min_torque
 // (w_M = 5) and min_act (w_M = 60000) of Sec. 6.2. --weaken GAS=0.25 scales both GAS units' F_max
 // (the weakened muscles of Sec. 6.2). A saved controller records its effort, weights and weakness,
-// and a replay uses them unless told otherwise.
+// and a replay uses them unless told otherwise. --gait run starts from Sec. 6.3's running
+// controller instead of the walking one; --iterations 0 checks the initial controller without
+// optimizing it.
 //
 // Every form takes the viewer flags (--html FILE, --filmstrip FILE, --csv FILE, ...) for the
 // check rollout. Writes DIR/wang2012_walk.controller.json, .convergence.csv, .checkpoint, .csv
@@ -69,6 +71,7 @@ struct cli {
   fs::path out;
   bool resume = false;
   std::string init, replay;
+  std::string gait = "walk";  // the initial controller without --init: walk (Sec. 5) or run (6.3)
   std::map<std::string, double> weights;  // --weight TERM=W (ours: a continuation stage)
   std::string effort;  // metabolic (Sec. 5.1), torque or activation (Sec. 6.2); "": saved/metabolic
   std::map<std::string, double> weaken;  // --weaken MTU=F (Sec. 6.2): F_max x F, both legs
@@ -95,7 +98,8 @@ cli parse(int argc, char** argv) {
   std::string out, resume;
   app.add_option("--speed", c.speed, "target COM speed, m/s (nwalk 1.25)")
       ->check(example_cli::in_range(0.01, 10.0));
-  app.add_option("--iterations", c.iterations, "CMA-ES iterations")
+  app.add_option("--iterations", c.iterations,
+                 "CMA-ES iterations (0: no optimization, check the initial controller)")
       ->check(example_cli::integer_in(0, 10000000));
   example_cli::add_threads(app, c.threads);
   example_cli::add_seed(app, c.seed);
@@ -103,6 +107,10 @@ cli parse(int argc, char** argv) {
   app.add_option("--resume", resume, "continue the run in this folder with its recorded options");
   app.add_option("--init", c.init, "start from this saved controller (JSON)")
       ->check(CLI::ExistingFile);
+  app.add_option("--gait", c.gait,
+                 "initial controller without --init: walk (Geyer & Herr, Sec. 5) or run (Sec. "
+                 "6.3: start at 3.05 m/s, GAS and SOL force gains doubled, elbows bent)")
+      ->check(CLI::IsMember({"walk", "run"}));
   app.add_option("--replay", c.replay, "replay this saved controller (JSON) instead")
       ->check(CLI::ExistingFile);
   app.add_option("--check-seconds", c.check_seconds, "length of the check rollout, s")
@@ -246,7 +254,7 @@ int run_with(const cli& c, const floating_model& m, const std::vector<musculoten
     best_cost = res.value;
     save(best, best_cost);
   };
-  if (c.replay.empty()) {
+  if (c.replay.empty() && c.iterations > 0) {
     if (c.robust_starts == 0 && c.robust_pushes == 0) {
       optimize(prob);
     } else {
@@ -336,6 +344,13 @@ int run_with(const cli& c, const floating_model& m, const std::vector<musculoten
       viz_detail::save_text(c.muscle_svg, os.str(), "--muscle-svg");
     }
   }
+  // Sec. 6.2's effort comparison: the left leg's mean activation per MTU after the first 2 s.
+  nlohmann::json activation = nlohmann::json::object();
+  if (!muscles.time.empty() && muscles.time.back() > 4.0) {
+    const std::vector<double> a = mean_activation(muscles, 2.0);
+    for (std::size_t i = 0; i < a.size(); ++i)
+      if (muscles.names[i].starts_with("l")) activation[muscles.names[i].substr(1)] = a[i];
+  }
   if (c.viz.any()) {
     viz_outputs v = c.viz;
     v.html_options.title = "Wang et al. 2012, muscle-driven walk";
@@ -369,6 +384,7 @@ int run_with(const cli& c, const floating_model& m, const std::vector<musculoten
   sum["standard_scores"] = scores;
   sum["gas"] = gas;
   sum["gait_features_deg"] = features;
+  sum["mean_activation"] = activation;
   sum["evaluations"] = res.evaluations;
   sum["iterations"] = res.iterations;
   example_cli::report_summary(sum, c.out);
@@ -377,7 +393,9 @@ int run_with(const cli& c, const floating_model& m, const std::vector<musculoten
 
 int run(cli c) {
   const floating_model m = wang2012_humanoid();
-  std::vector<double> x0 = wang2012_reflex_controller::initial_parameters(m);
+  std::vector<double> x0 = c.gait == "run"
+                               ? wang2012_reflex_controller::initial_running_parameters(m)
+                               : wang2012_reflex_controller::initial_parameters(m);
   double speed = c.speed;
   if (!c.init.empty() || !c.replay.empty()) {
     const wang2012_saved_controller s =

@@ -9,6 +9,7 @@
 #include <cstdint>
 #include <numbers>
 #include <span>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -213,4 +214,28 @@ TEST_CASE("musculotendon_recorder: samples line up with the trajectory and hold 
     CHECK(d.curves[3][0][k] == Approx(mr.normalized_fiber_length[gas][k]).margin(1e-12));
   CHECK_THROWS_WITH(muscle_gait_channels(mr, "lGASTRO"),
                     Contains("'lGASTRO'") && Contains("lGAS") && Contains("rSOL"));
+}
+
+TEST_CASE("mean_activation: each MTU's activation averaged over the samples from t_from",
+          "[analysis]") {
+  muscle_recording r;
+  r.names = {"lTA", "lVAS"};
+  r.time = {0.0, 1.0, 2.0, 3.0};
+  r.activation = {{0.9, 0.1, 0.2, 0.4}, {0.5, 0.5, 0.0, 1.0}};
+  const std::vector<double> all = mean_activation(r, 0.0);
+  REQUIRE(all.size() == 2);
+  CHECK(all[0] == Approx(0.4));  // (0.9 + 0.1 + 0.2 + 0.4) / 4
+  CHECK(all[1] == Approx(0.5));
+  const std::vector<double> late = mean_activation(r, 1.5);  // the samples at 2 and 3 s
+  CHECK(late[0] == Approx(0.3));
+  CHECK(late[1] == Approx(0.5));
+  CHECK(mean_activation(r, 3.0)[0] == Approx(0.4));  // t_from itself counts
+  try {
+    (void)mean_activation(r, 3.5);
+    FAIL("a t_from after the last sample must throw");
+  } catch (const std::invalid_argument& e) {
+    CHECK_THAT(e.what(), Catch::Contains("t_from = 3.5") && Catch::Contains("ends at 3 s"));
+  }
+  r.activation.pop_back();  // a series short
+  CHECK_THROWS_AS(mean_activation(r, 0.0), std::invalid_argument);
 }

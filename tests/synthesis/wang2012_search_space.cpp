@@ -36,3 +36,37 @@ TEST_CASE("wang2012 search space: 122 bounded parameters around the initial cont
   bad.pop_back();
   CHECK_THROWS_WITH(wang2012_search_space(bad), Contains("121"));
 }
+
+TEST_CASE(
+    "wang2012 running start (Sec. 6.3): 3.05 m/s, GAS and SOL force gains doubled, elbows "
+    "bent, inside the search space",
+    "[synthesis][wang2012]") {
+  const auto m = wang2012_humanoid();
+  const std::vector<double> walk = wang2012_reflex_controller::initial_parameters(m);
+  const std::vector<double> run = wang2012_reflex_controller::initial_running_parameters(m);
+  const auto names = wang2012_reflex_controller::parameter_names();
+  REQUIRE(run.size() == walk.size());
+  auto at = [&](const std::vector<double>& x, const char* name) {
+    for (std::size_t i = 0; i < names.size(); ++i)
+      if (names[i] == name) return x[i];
+    FAIL("no parameter " << name);
+    return 0.0;
+  };
+  CHECK(at(run, "start.root_vx") == 3.05);
+  CHECK(at(walk, "start.root_vx") == 1.3);
+  CHECK(at(run, "G_GAS") == 2.0 * at(walk, "G_GAS"));
+  CHECK(at(run, "G_SOL") == 2.0 * at(walk, "G_SOL"));
+  CHECK(at(run, "elbow_target") < at(walk, "elbow_target") - 1.0);  // flexion is negative
+  int changed = 0;
+  for (std::size_t i = 0; i < run.size(); ++i) changed += run[i] != walk[i];
+  CHECK(changed == 4);  // nothing else
+  // Inside the bounds, with room above the running start's speed; walking starts keep [0, 3].
+  const parameter_space space = wang2012_search_space(run);
+  for (const parameter_spec& p : space.parameters()) {
+    INFO(p.name);
+    CHECK(p.lower < p.initial);
+    CHECK(p.initial < p.upper);
+  }
+  CHECK(wang2012_parameter_bounds("start.root_vx", 3.05) == std::pair(0.0, 6.1));
+  CHECK(wang2012_parameter_bounds("start.root_vx", 1.3) == std::pair(0.0, 3.0));
+}

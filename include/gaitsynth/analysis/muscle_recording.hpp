@@ -164,4 +164,25 @@ inline std::vector<gait_channel> muscle_gait_channels(const muscle_recording& r,
           channel("fiber length", r.normalized_fiber_length, "l_opt")};
 }
 
+/// Each MTU's activation averaged over the samples at or after t_from (s), in r's MTU order: how
+/// hard a gait leans on each muscle (Wang et al. 2012, Sec. 6.2: min_torque keeps TA "highly
+/// activated throughout the gait"; min_act lowers GAS/SOL and raises VAS). A plain mean of the
+/// samples: the recorder spaces them evenly (only the final one may be closer). Throws
+/// std::invalid_argument naming t_from when no sample is that late.
+inline std::vector<double> mean_activation(const muscle_recording& r, double t_from) {
+  check_argument(r.activation.size() == r.names.size(), "mean_activation: the recording has ",
+                 r.activation.size(), " activation series for ", r.names.size(), " MTUs");
+  std::vector<double> mean(r.names.size(), 0.0);
+  std::size_t n = 0;
+  for (std::size_t k = 0; k < r.time.size(); ++k) {
+    if (!(r.time[k] >= t_from)) continue;
+    ++n;
+    for (std::size_t i = 0; i < mean.size(); ++i) mean[i] += r.activation[i][k];
+  }
+  check_argument(n > 0, "mean_activation: no sample at or after t_from = ", t_from,
+                 " s (the recording ends at ", r.time.empty() ? 0.0 : r.time.back(), " s)");
+  for (double& a : mean) a /= static_cast<double>(n);
+  return mean;
+}
+
 }  // namespace gaitsynth

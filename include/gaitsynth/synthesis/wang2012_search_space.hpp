@@ -15,8 +15,10 @@
 ///   coronal and transverse targets                      [-0.5, 0.5] rad
 ///   alpha_arm, elbow_target                             [0, 3], [-2.5, 0] rad
 ///   start: height +-0.1 m about the initial, pitch and roll [-0.3, 0.3] rad, forward speed
-///   [0, 3] m/s, sideways and vertical [-1, 1] m/s, pitch rate [-3, 3] rad/s, joint angles
+///   [0, max(3, 2 x0)] m/s (x0 its initial value: 3 for walking starts), sideways and vertical [-1,
+///   1] m/s, pitch rate [-3, 3] rad/s, joint angles
 ///   [-2.5, 2.5] rad, joint rates [-10, 10] rad/s.
+#include <algorithm>
 #include <string>
 #include <vector>
 
@@ -32,7 +34,8 @@ inline std::pair<double, double> wang2012_parameter_bounds(const std::string& na
   if (starts("start.")) {
     if (name == "start.root_z") return {x0 - 0.1, x0 + 0.1};
     if (name == "start.root_pitch" || name == "start.root_roll") return {-0.3, 0.3};
-    if (name == "start.root_vx") return {0.0, 3.0};
+    // Walking starts (1.3 m/s) keep [0, 3]; the running start (3.05 m/s) gets room above it.
+    if (name == "start.root_vx") return {0.0, std::max(3.0, 2.0 * x0)};
     if (name == "start.root_vy" || name == "start.root_vz") return {-1.0, 1.0};
     if (name == "start.root_wy") return {-3.0, 3.0};
     if (starts("start.q.")) return {-2.5, 2.5};

@@ -28,6 +28,7 @@ namespace gaitsynth::reflex {
 
 struct start_state_layout {
   static constexpr int num_root = 7;  ///< z, pitch, roll, vx, vy, vz, wy
+  static constexpr int root_vx = 3;   ///< the start's forward velocity, m/s
   static constexpr std::array<std::string_view, num_root> root_names{
       "root_z", "root_pitch", "root_roll", "root_vx", "root_vy", "root_vz", "root_wy"};
   static constexpr std::array<std::string_view, 13> dofs{
@@ -102,7 +103,7 @@ inline start_state_vector start_state_initial_parameters(const floating_model& m
   set("lhip_y", (140.0 - 180.0) * deg);
   set("lknee", (180.0 - 175.0) * deg);
   set("lankle_y", (90.0 - 90.0) * deg);
-  p[3] = 1.3;
+  p[L::root_vx] = 1.3;
   sim_state s;
   write_start_state(m, p, start_state_dofs(m), s);
   p[0] = -lowest_foot_point(m, s.q);

@@ -108,6 +108,18 @@ class wang2012_reflex_controller {
     for (double x : reflex::start_state_initial_parameters(m)) out.push_back(x);
     return out;
   }
+  /// The running start of Sec. 6.3: initial_parameters with the start's forward velocity 3.05 m/s
+  /// instead of 1.3, the force-feedback gains of GAS and SOL (G_GAS, G_SOL) doubled and the elbow
+  /// bent. The paper's exact elbow angle is in its supplemental material, which we do not have:
+  /// ours, 1.5 rad of flexion (a runner's near right angle).
+  static std::vector<double> initial_running_parameters(const floating_model& m) {
+    std::vector<double> out = initial_parameters(m);
+    out[reflex::G_GAS] *= 2.0;
+    out[reflex::G_SOL] *= 2.0;
+    out[num_reflex + reflex::elbow_target] = -1.5;
+    out[num_reflex + num_upper_body + reflex::start_state_layout::root_vx] = 3.05;
+    return out;
+  }
   /// Every parameter's name, in order.
   static std::vector<std::string> parameter_names() {
     std::vector<std::string> out;
