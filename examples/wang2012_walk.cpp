@@ -42,8 +42,8 @@
 #include "command_line.hpp"
 #include "gaitsynth/actuators/musculotendon/leg_muscles.hpp"
 #include "gaitsynth/actuators/musculotendon_actuator.hpp"
-#include "gaitsynth/analysis/cycle_window.hpp"
 #include "gaitsynth/analysis/muscle_recording.hpp"
+#include "gaitsynth/analysis/sagittal_gait_features.hpp"
 #include "gaitsynth/analysis/standard_score.hpp"
 #include "gaitsynth/controllers/reflex/wang2012_json.hpp"
 #include "gaitsynth/gaitsynth.hpp"
@@ -306,16 +306,12 @@ int run_with(const cli& c, const floating_model& m, const std::vector<musculoten
                             .sd = h.sd});
       if (g.num_cycles() >= 1) scores[channels[k].label] = standard_score(g.percent, g.mean[k], h);
     }
-    if (g.num_cycles() >= 1) {
-      // Sec. 6.2's comparisons (analysis/cycle_window.hpp), deg: channels 1 and 2 are the knee
-      // flexion and ankle dorsiflexion angles of human_sagittal_channels.
-      const auto knee_stance = cycle_window(g.percent, g.mean[1], gait_windows::mid_stance);
-      features["knee_flexion_mid_stance_min"] = knee_stance.min;
-      features["knee_flexion_mid_stance_mean"] = knee_stance.mean;
-      features["knee_flexion_swing_max"] =
-          cycle_window(g.percent, g.mean[1], gait_windows::swing).max;
-      features["ankle_dorsiflexion_terminal_swing_mean"] =
-          cycle_window(g.percent, g.mean[2], gait_windows::terminal_swing).mean;
+    if (g.num_cycles() >= 1) {  // Sec. 6.2's comparisons (analysis/sagittal_gait_features.hpp)
+      const sagittal_gait_features f = sagittal_gait_features_of(g);
+      features["knee_flexion_mid_stance_min"] = f.knee_flexion_mid_stance_min;
+      features["knee_flexion_mid_stance_mean"] = f.knee_flexion_mid_stance_mean;
+      features["knee_flexion_swing_max"] = f.knee_flexion_swing_max;
+      features["ankle_dorsiflexion_terminal_swing_mean"] = f.ankle_dorsiflexion_terminal_swing_mean;
     }
   }
   nlohmann::json gas = nlohmann::json::object();
