@@ -141,6 +141,9 @@ class trajectory_observer {
   void sample_terrain(const T& ground) {
     double x0 = -2, x1 = 2, y0 = -2, y1 = 2;
     for (const auto& f : tr_->frames) {
+      // A diverged rollout's last frames may hold huge or non-finite COMs: they do not size the
+      // grid (a cell count from them would overflow int).
+      if (!f.com.allFinite() || std::abs(f.com.x()) > 1e4 || std::abs(f.com.y()) > 1e4) continue;
       x0 = std::min(x0, f.com.x() - 2);
       x1 = std::max(x1, f.com.x() + 2);
       y0 = std::min(y0, f.com.y() - 2);
@@ -150,8 +153,8 @@ class trajectory_observer {
     ts.dx = ts.dy = 0.1;
     ts.x0 = x0;
     ts.y0 = tr_->planar ? -0.5 : y0;
-    ts.nx = std::min(2001, static_cast<int>(std::ceil((x1 - x0) / ts.dx)) + 1);
-    ts.ny = tr_->planar ? 2 : std::min(2001, static_cast<int>(std::ceil((y1 - y0) / ts.dy)) + 1);
+    ts.nx = static_cast<int>(std::min(2001.0, std::ceil((x1 - x0) / ts.dx) + 1));
+    ts.ny = tr_->planar ? 2 : static_cast<int>(std::min(2001.0, std::ceil((y1 - y0) / ts.dy) + 1));
     ts.dy = tr_->planar ? 1.0 : ts.dy;
     ts.height.resize(static_cast<std::size_t>(ts.nx) * ts.ny);
     for (int iy = 0; iy < ts.ny; ++iy)

@@ -1,0 +1,80 @@
+// One 64 Hz tick of Wu & Popovic 2010's lower level (controllers/end_effector/lower_level.hpp) on
+// the Table 3 biped: frames, ideal PD forces (eqs. 1-3), J (Sec. 6.1) and its QR, eq. 5's QP and
+// appendix B's canceling QP. Issue 12's goal: the controller below 20 us per tick.
+//
+//   bench_controllers                      every case
+//   BM_LowerLevelTick/pinned:1             double stance: the 8 foot frames pinned (Sec. 6.3)
+//   BM_LowerLevelTick/pinned:0             nothing touches: every frame's rows in the objective
+//   BM_PairJacobianAndQR                   J and its QR alone
+// GCC 12 with -march=native warns falsely inside avx512fintrin.h (see benchmarks/qp/qp.cpp).
+#if defined(__GNUC__) && !defined(__clang__)
+#pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
+#endif
+#include <benchmark/benchmark.h>
+
+#include <gaitsynth/controllers/end_effector/lower_level.hpp>
+#include <gaitsynth/models/wu2010.hpp>
+
+using namespace gaitsynth;
+
+namespace {
+
+/// A standing pose with bent knees, small velocities, targets a few cm off.
+struct tick_fixture {
+  floating_model m = wu2010_biped();
+  end_effector_layout L = biped_end_effector_layout(m);
+  lower_level_workspace<floating_root> ws = make_lower_level_workspace(m, L);
+  Eigen::VectorXd q = Eigen::VectorXd::Zero(m.nq()), v = Eigen::VectorXd::Zero(m.nv());
+  std::vector<link_target> targets{3};
+  std::vector<unsigned char> touching;
+  tick_fixture(bool touch) : touching(m.contact_points.size(), touch ? 1 : 0) {
+    q[2] = 1.08;
+    q[3] = 1.0;
+    for (const char* S : {"l", "r"}) {
+      const std::string s = S;
+      q[7 + m.dof_index(s + "hip_y")] = -0.2;
+      q[7 + m.dof_index(s + "knee")] = 0.4;
+      q[7 + m.dof_index(s + "ankle_y")] = -0.2;
+    }
+    for (int i = 0; i < m.nv(); ++i) v[i] = 0.05 * std::sin(i);
+    auto fk = make_workspace(m);
+    forward_kinematics(m, fk, q);
+    for (int i = 0; i < 3; ++i)
+      targets[i] = {fk.body_position[L.link_body[i]] + vec3(0.01, -0.01, 0.02 * (i == 0)),
+                    fk.body_rotation[L.link_body[i]], vec3::Zero(), vec3::Zero()};
+  }
+};
+
+void BM_LowerLevelTick(benchmark::State& state) {
+  tick_fixture fx(state.range(0) != 0);
+  const end_effector_gains g;
+  const lower_level_options opt;
+  for (auto _ : state) {
+    const Eigen::VectorXd& tau =
+        lower_level_torques(fx.m, fx.L, g, opt, fx.q, fx.v, fx.targets, fx.touching, fx.ws);
+    benchmark::DoNotOptimize(tau.data());
+  }
+  if (fx.ws.qp.status != qp_status::optimal) state.SkipWithError("QP not optimal");
+  int pinned = 0;
+  for (const unsigned char p : fx.ws.pinned) pinned += p;
+  state.counters["pinned"] = pinned;
+  state.counters["rank"] = static_cast<double>(fx.ws.qp.rank);
+  state.counters["active"] = fx.ws.qp.qp_ws.result.active_constraints;
+}
+
+void BM_PairJacobianAndQR(benchmark::State& state) {
+  tick_fixture fx(true);
+  const force_qp_options opt;
+  forward_kinematics(fx.m, fx.ws.dyn, fx.q, fx.v);
+  read_frame_states(fx.m, fx.ws.dyn, fx.L, fx.ws.current);
+  for (auto _ : state) {
+    pair_jacobian(fx.m, fx.ws.dyn, fx.q, fx.L, fx.ws.current, fx.ws.Jpt, fx.ws.Jub, fx.ws.J);
+    factor_pair_jacobian(fx.ws.J, opt, fx.ws.qp);
+    benchmark::DoNotOptimize(fx.ws.qp.U.data());
+  }
+}
+
+}  // namespace
+
+BENCHMARK(BM_LowerLevelTick)->ArgName("pinned")->Arg(1)->Arg(0);
+BENCHMARK(BM_PairJacobianAndQR);

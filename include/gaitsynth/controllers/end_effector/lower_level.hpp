@@ -1,0 +1,151 @@
+#pragma once
+/// \file controllers/end_effector/lower_level.hpp
+/// One tick of the lower level of Wu & Popovic 2010 (Sec. 5, 6 and appendix B): from the state
+/// (q, v), the contacts and the end-effector links' targets to joint torques,
+///
+///   frames (Sec. 5) -> ideal PD wrenches (eqs. 1-3) -> J (Sec. 6.1) -> pinned frames (Sec. 6.3)
+///   -> eq. 5's QP -> tau = J^T f + (tau_theta + J^T f_theta) (appendix B, eq. 12).
+///
+/// The workspace is sized once (make_lower_level_workspace); a tick allocates nothing. The planner
+/// (Sec. 4, later) and the standing controller (standing_balance.hpp) call it with their targets.
+#include <Eigen/Core>
+#include <cmath>
+#include <span>
+#include <vector>
+
+#include "gaitsynth/controllers/end_effector/force_qp.hpp"
+#include "gaitsynth/controllers/end_effector/frames.hpp"
+#include "gaitsynth/controllers/end_effector/generalized_forces.hpp"
+#include "gaitsynth/controllers/end_effector/null_space_knee.hpp"
+#include "gaitsynth/controllers/end_effector/pd_forces.hpp"
+#include "gaitsynth/dynamics/kinematics.hpp"
+#include "gaitsynth/dynamics/workspace.hpp"
+#include "gaitsynth/error.hpp"
+
+namespace gaitsynth {
+
+struct lower_level_options {
+  force_qp_options qp{};
+  double eps_p = 0.2;        ///< Sec. 6.3: pinned only within this distance of the target (m)
+  double eps_pdot = 0.05;    ///< Sec. 6.3: and when the target moves slower than this (m/s)
+  bool knee_control = true;  ///< appendix B
+  /// Ours, not the paper's: a joint-space spring and damper toward the zero joint angles, sent
+  /// through appendix B's canceling QP with the knee torque, so only its part in null(J) acts.
+  /// J^T f reaches 12 of the 17 joint DOFs of the Table 3 biped; the other 5 (the pelvis rolling
+  /// about the hip axis, whose COM sits on that axis, and each knee swiveling about the hip-ankle
+  /// line) move no frame, get no torque from eq. 5 and would drift without it. The paper does not
+  /// say what holds them in PhysX. N m/rad and N m s/rad; 0 and 0 switch it off.
+  double null_space_kp = 500.0;
+  double null_space_kd = 20.0;
+};
+
+template <root_joint Root>
+struct lower_level_workspace {
+  workspace<Root> dyn;                ///< own kinematics (the rollout's workspace is read-only)
+  frame_states current, desired;      ///< hatted and desired frame states
+  ideal_wrenches ideal;               ///< eqs. 1-3
+  Eigen::MatrixXd Jpt, Jub;           ///< 3 x nv point Jacobians
+  Eigen::MatrixXd J;                  ///< 3K x nj, Sec. 6.1
+  std::vector<unsigned char> pinned;  ///< per action frame (Sec. 6.3)
+  Eigen::VectorXd tau_max;            ///< nj, the model's torque limits (Table 3)
+  Eigen::VectorXd tau_theta;          ///< nj, appendix B's knee torques
+  Eigen::VectorXd tau;                ///< nj, the output
+  force_qp_workspace qp;
+};
+
+template <root_joint Root>
+lower_level_workspace<Root> make_lower_level_workspace(const model<Root>& m,
+                                                       const end_effector_layout& L) {
+  check_argument(L.num_links() >= 2 && L.num_action() >= 1,
+                 "make_lower_level_workspace: the layout needs an upper body, a foot and an "
+                 "action frame, has ",
+                 L.num_links(), " links and ", L.num_action(), " action frames");
+  const int nj = m.num_joint_dofs();
+  lower_level_workspace<Root> ws;
+  ws.dyn = make_workspace(m);
+  ws.current = make_frame_states(L);
+  ws.desired = make_frame_states(L);
+  ws.ideal.action_force.assign(L.action.size(), vec3::Zero());
+  ws.Jpt.setZero(3, m.nv());
+  ws.Jub.setZero(3, m.nv());
+  ws.J.setZero(3 * L.num_pairs(), nj);
+  ws.pinned.assign(L.action.size(), 0);
+  ws.tau_max.resize(nj);
+  for (int j = 0; j < nj; ++j) {
+    const double t = m.dofs[j].torque_limit;
+    check_argument(t > 0.0, "make_lower_level_workspace: DOF '", m.dofs[j].name,
+                   "' needs a finite torque limit > 0 for eq. 5c, has ", t);
+    ws.tau_max[j] = std::isfinite(t) ? t : 1e12;
+  }
+  ws.tau_theta.setZero(nj);
+  ws.tau.setZero(nj);
+  ws.qp = force_qp_workspace(L.num_pairs(), L.num_action(), nj);
+  return ws;
+}
+
+/// Throws std::invalid_argument naming the link and the value unless every target is finite.
+inline void check_link_targets(const std::vector<link_target>& targets) {
+  for (std::size_t i = 0; i < targets.size(); ++i) {
+    const link_target& t = targets[i];
+    auto finite = [](const auto& x) { return x.allFinite(); };
+    check_argument(finite(t.position), "lower level: link ", i, " target position is not finite (",
+                   t.position.transpose(), ")");
+    check_argument(finite(t.rotation), "lower level: link ", i, " target rotation is not finite");
+    check_argument(finite(t.velocity), "lower level: link ", i, " target velocity is not finite (",
+                   t.velocity.transpose(), ")");
+    check_argument(finite(t.angular_velocity), "lower level: link ", i,
+                   " target angular velocity is not finite (", t.angular_velocity.transpose(), ")");
+  }
+}
+
+/// Sec. 6.3: action frame j is pinned when a contact point of its geometry touches, its position
+/// is within eps_p of its target and its target moves slower than eps_pdot.
+inline void pinned_frames(const end_effector_layout& L, const frame_states& current,
+                          const frame_states& desired, std::span<const unsigned char> touching,
+                          const lower_level_options& opt, std::span<unsigned char> pinned) {
+  for (int j = 0; j < L.num_action(); ++j) {
+    bool contact = false;
+    for (const int c : L.action[j].contacts)
+      contact = contact || (static_cast<std::size_t>(c) < touching.size() && touching[c]);
+    pinned[j] = contact && (desired.position[j] - current.position[j]).norm() < opt.eps_p &&
+                desired.velocity[j].norm() < opt.eps_pdot;
+  }
+}
+
+/// One tick. `touching` has one flag per contact point of the model (sensors::contact_active).
+/// Returns ws.tau (nj): J^T f plus eq. 12's null-space knee term. When the QP fails (a status in
+/// ws.qp.status, never NaN) the torques are zero.
+template <root_joint Root>
+const Eigen::VectorXd& lower_level_torques(
+    const model<Root>& m, const end_effector_layout& L, const end_effector_gains& g,
+    const lower_level_options& opt, const Eigen::Ref<const Eigen::VectorXd>& q,
+    const Eigen::Ref<const Eigen::VectorXd>& v, const std::vector<link_target>& targets,
+    std::span<const unsigned char> touching, lower_level_workspace<Root>& ws) {
+  check_link_targets(targets);
+  forward_kinematics(m, ws.dyn, q, v);
+  read_frame_states(m, ws.dyn, L, ws.current);
+  desired_frame_states(m, L, targets, ws.desired);
+  compute_ideal_wrenches(L, g, ws.current, ws.desired, ws.ideal);
+  pinned_frames(L, ws.current, ws.desired, touching, opt, ws.pinned);
+  pair_jacobian(m, ws.dyn, q, L, ws.current, ws.Jpt, ws.Jub, ws.J);
+  factor_pair_jacobian(ws.J, opt.qp, ws.qp);
+  assemble_eq4(L, ws.current, ws.ideal, ws.qp.A, ws.qp.b);
+  // W: the upper body's force and torque rows share one weight, the feet's are 1 (Sec. 6.2).
+  ws.qp.w.setOnes();
+  ws.qp.w.head(3).setConstant(g.upper_body_weight);
+  ws.qp.w.tail(3).setConstant(g.upper_body_weight);
+  solve_force_qp(ws.pinned, ws.tau_max, opt.qp, ws.qp);
+  ws.tau = ws.qp.tau;
+  ws.tau_theta.setZero();
+  if (opt.knee_control && g.rho > 0.0)
+    knee_bending_torques(m, ws.dyn, q, L, ws.current, ws.desired, g.rho, ws.tau_theta);
+  const int nj = m.num_joint_dofs();
+  if (opt.null_space_kp > 0.0 || opt.null_space_kd > 0.0) {
+    ws.tau_theta -= opt.null_space_kp * q.tail(nj) + opt.null_space_kd * v.tail(nj);
+  }
+  solve_canceling_qp(ws.tau_theta, opt.qp, ws.qp);  // eq. 12's bracket
+  ws.tau += ws.qp.tau_extra;
+  return ws.tau;
+}
+
+}  // namespace gaitsynth

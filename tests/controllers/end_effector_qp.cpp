@@ -1,0 +1,179 @@
+// Wu & Popovic 2010, eq. 5 and Sec. 6.3 (controllers/end_effector/force_qp.hpp): the QP solved
+// per tick satisfies its KKT conditions, gives the same forces as eq. 5 written as the paper
+// does (3K unknowns, Z^T f = 0), agrees with Eigen's least squares when no bound is active,
+// drops exactly the pinned frames' rows, and appendix B's canceling QP leaves only the part of
+// the knee torque that J^T f cannot produce.
+#include <catch2/catch.hpp>
+#include <random>
+
+#include "gaitsynth/controllers/end_effector/lower_level.hpp"
+#include "gaitsynth/models/wu2010.hpp"
+#include "gaitsynth/qp/kkt.hpp"
+#include "support/dynamics_support.hpp"
+
+using namespace gaitsynth;
+using gaitsynth::testing::is_approx;
+
+namespace {
+
+struct fixture {
+  floating_model m = wu2010_biped();
+  end_effector_layout L = biped_end_effector_layout(m);
+  lower_level_workspace<floating_root> ws = make_lower_level_workspace(m, L);
+  force_qp_options opt;
+
+  /// A bent-knee pose with random velocities, random ideal wrenches in b.
+  void setup(std::mt19937& rng, double wrench_scale) {
+    Eigen::VectorXd q = Eigen::VectorXd::Zero(m.nq());
+    q[3] = 1.0;
+    q.tail(17) = gaitsynth::testing::random_vector(rng, 17, 0.3);
+    q[7 + m.dof_index("lknee")] = 0.5;
+    q[7 + m.dof_index("rknee")] = 0.7;
+    const Eigen::VectorXd v = gaitsynth::testing::random_vector(rng, m.nv(), 0.5);
+    forward_kinematics(m, ws.dyn, q, v);
+    read_frame_states(m, ws.dyn, L, ws.current);
+    pair_jacobian(m, ws.dyn, q, L, ws.current, ws.Jpt, ws.Jub, ws.J);
+    factor_pair_jacobian(ws.J, opt, ws.qp);
+    ws.ideal.reaction_force = gaitsynth::testing::random_vec3(rng, wrench_scale);
+    ws.ideal.reaction_torque = gaitsynth::testing::random_vec3(rng, wrench_scale);
+    for (vec3& f : ws.ideal.action_force) f = gaitsynth::testing::random_vec3(rng, wrench_scale);
+    assemble_eq4(L, ws.current, ws.ideal, ws.qp.A, ws.qp.b);
+    ws.qp.w.setOnes();
+    ws.qp.w.head(3).setConstant(5.0);
+    ws.qp.w.tail(3).setConstant(5.0);
+  }
+};
+
+/// Eq. 5 as the paper writes it: unknowns f (3K), equality rows Z^T f = 0, bounds on f and J^T f,
+/// with the same regularization lambda ||f||^2 as force_qp.hpp.
+dense_qp paper_program(const force_qp_workspace& w, std::span<const unsigned char> pinned,
+                       const Eigen::MatrixXd& J, const Eigen::VectorXd& tau_max, double f_max,
+                       double lambda) {
+  const Eigen::Index K3 = w.K3, nz = K3 - w.rank;
+  Eigen::MatrixXd Wsqrt_A(0, K3);
+  Eigen::VectorXd Wsqrt_b(0);
+  for (Eigen::Index i = 0; i < w.rows_full; ++i) {
+    const Eigen::Index frame = i >= 3 && i < w.rows_full - 3 ? (i - 3) / 3 : -1;
+    if (frame >= 0 && pinned[static_cast<std::size_t>(frame)]) continue;
+    Wsqrt_A.conservativeResize(Wsqrt_A.rows() + 1, K3);
+    Wsqrt_b.conservativeResize(Wsqrt_b.size() + 1);
+    Wsqrt_A.bottomRows(1) = std::sqrt(w.w[i]) * w.A.row(i);
+    Wsqrt_b[Wsqrt_b.size() - 1] = std::sqrt(w.w[i]) * w.b[i];
+  }
+  dense_qp qp = make_dense_qp(K3, nz, J.cols());
+  qp.H = Wsqrt_A.transpose() * Wsqrt_A + lambda * Eigen::MatrixXd::Identity(K3, K3);
+  qp.g = -Wsqrt_A.transpose() * Wsqrt_b;
+  qp.A = w.Q.rightCols(nz).transpose();  // Z^T f = 0
+  qp.C = J.transpose();
+  qp.c_lower = -tau_max;
+  qp.c_upper = tau_max;
+  qp.x_lower.setConstant(-f_max);
+  qp.x_upper.setConstant(f_max);
+  return qp;
+}
+
+}  // namespace
+
+TEST_CASE("eq. 5 in range(J)'s coordinates equals eq. 5 with Z^T f = 0, and is optimal (KKT)",
+          "[controllers][end_effector][qp]") {
+  fixture fx;
+  std::mt19937 rng(5);
+  for (int trial = 0; trial < 6; ++trial) {
+    // Large wrenches make bounds active on some trials (f_max and the joint torque limits).
+    fx.setup(rng, trial < 3 ? 200.0 : 3000.0);
+    std::vector<unsigned char> pinned(8, 0);
+    if (trial % 2) pinned = {1, 1, 0, 1, 0, 0, 1, 0};
+    REQUIRE(fx.ws.qp.rank == 12);
+    const qp_status st = solve_force_qp(pinned, fx.ws.tau_max, fx.opt, fx.ws.qp);
+    REQUIRE(st == qp_status::optimal);
+    const qp_result& r = fx.ws.qp.qp_ws.result;
+    const qp_kkt_residuals k = kkt_residuals(fx.ws.qp.qp, r.x, r.y, r.lambda_c, r.lambda_x);
+    INFO("trial " << trial << ", active " << r.active_constraints);
+    CHECK(k.max() < 1e-7 * std::max(1.0, fx.ws.qp.qp.g.cwiseAbs().maxCoeff()));
+    // The regularization the solver added: H's diagonal minus the unregularized one.
+    const Eigen::MatrixXd AU = fx.ws.qp.AU.topRows(fx.ws.qp.rows);
+    const double lambda = (fx.ws.qp.qp.H - AU.transpose() * AU).diagonal()[0];
+    const dense_qp paper =
+        paper_program(fx.ws.qp, pinned, fx.ws.J, fx.ws.tau_max, fx.opt.f_max, lambda);
+    qp_workspace pws(paper.num_variables(), paper.num_equalities(), paper.num_inequalities());
+    const qp_result& pr = solve_qp(paper, pws);
+    REQUIRE(pr.status == qp_status::optimal);
+    CHECK_THAT(fx.ws.qp.f, is_approx(pr.x, 1e-7, 1e-6));
+    CHECK((fx.ws.J.transpose() * fx.ws.qp.f - fx.ws.qp.tau).norm() < 1e-8 * fx.ws.qp.f.norm());
+    // Sec. 6.2's bounds hold.
+    CHECK(fx.ws.qp.f.cwiseAbs().maxCoeff() <= fx.opt.f_max * (1 + 1e-9));
+    CHECK(((fx.ws.qp.tau.cwiseAbs() - fx.ws.tau_max).array() <= 1e-6).all());
+  }
+}
+
+TEST_CASE("with no bound active, eq. 5 is Eigen's regularized least squares over range(J)",
+          "[controllers][end_effector][qp]") {
+  fixture fx;
+  std::mt19937 rng(17);
+  fx.setup(rng, 50.0);
+  const std::vector<unsigned char> pinned(8, 0);
+  REQUIRE(solve_force_qp(pinned, fx.ws.tau_max, fx.opt, fx.ws.qp) == qp_status::optimal);
+  REQUIRE(fx.ws.qp.qp_ws.result.active_constraints == 0);
+  // Independent: an SVD of J for range(J) (not the solver's QR) and Eigen's least squares of
+  // [W^1/2 A U; sqrt(lambda) I] c = [W^1/2 b; 0].
+  Eigen::JacobiSVD<Eigen::MatrixXd> svd(fx.ws.J, Eigen::ComputeThinU);
+  const Eigen::MatrixXd U = svd.matrixU().leftCols(12);
+  const Eigen::MatrixXd Ws = fx.ws.qp.w.cwiseSqrt().asDiagonal();
+  const Eigen::MatrixXd AU = Ws * fx.ws.qp.A * U;
+  const double lambda =
+      fx.opt.regularization * std::max((AU.transpose() * AU).diagonal().maxCoeff(), 1.0);
+  Eigen::MatrixXd M(AU.rows() + 12, 12);
+  M << AU, std::sqrt(lambda) * Eigen::MatrixXd::Identity(12, 12);
+  Eigen::VectorXd rhs = Eigen::VectorXd::Zero(M.rows());
+  rhs.head(AU.rows()) = Ws * fx.ws.qp.b;
+  const Eigen::VectorXd c = M.colPivHouseholderQr().solve(rhs);
+  CHECK_THAT(fx.ws.qp.f, is_approx(U * c, 1e-8, 1e-8));
+  // And the regularization is small: the plain least-squares answer differs by < 1e-3.
+  const Eigen::VectorXd c0 = AU.colPivHouseholderQr().solve(Ws * fx.ws.qp.b);
+  CHECK((fx.ws.qp.f - U * c0).norm() < 1e-3 * (U * c0).norm());
+}
+
+TEST_CASE("Sec. 6.3: a pinned frame's rows leave A and b", "[controllers][end_effector][qp]") {
+  fixture fx;
+  std::mt19937 rng(63);
+  fx.setup(rng, 100.0);
+  const std::vector<unsigned char> pinned = {0, 1, 1, 0, 1, 0, 0, 0};
+  REQUIRE(solve_force_qp(pinned, fx.ws.tau_max, fx.opt, fx.ws.qp) == qp_status::optimal);
+  CHECK(fx.ws.qp.rows == 30 - 3 * 3);
+  // The kept rows, in order: the upper body's force, frames 0, 3, 5, 6, 7, the upper body's torque.
+  const int kept[] = {0, 3, 12, 18, 21, 24, 27};
+  for (int blk = 0; blk < 7; ++blk)
+    for (int i = 0; i < 3; ++i)
+      CHECK(fx.ws.qp.Ar.row(3 * blk + i) == fx.ws.qp.A.row(kept[blk] + i));
+  const Eigen::VectorXd f = fx.ws.qp.f;
+  // Changing a pinned frame's ideal force changes nothing; an unpinned one's does.
+  fx.ws.qp.b.segment<3>(action_row(1)) += vec3(500, -300, 800);
+  solve_force_qp(pinned, fx.ws.tau_max, fx.opt, fx.ws.qp);
+  CHECK(fx.ws.qp.f == f);
+  fx.ws.qp.b.segment<3>(action_row(0)) += vec3(50, 0, 0);
+  solve_force_qp(pinned, fx.ws.tau_max, fx.opt, fx.ws.qp);
+  CHECK((fx.ws.qp.f - f).norm() > 1.0);
+}
+
+TEST_CASE("appendix B: the canceling QP removes what J^T f can produce (eq. 12)",
+          "[controllers][end_effector][qp]") {
+  fixture fx;
+  std::mt19937 rng(12);
+  fx.setup(rng, 100.0);
+  Eigen::VectorXd tau_theta = Eigen::VectorXd::Zero(17);
+  tau_theta[fx.m.dof_index("lknee")] = 40.0;
+  tau_theta[fx.m.dof_index("lhip_z")] = -25.0;  // a swivel torque: partly in null(J)
+  REQUIRE(solve_canceling_qp(tau_theta, fx.opt, fx.ws.qp) == qp_status::optimal);
+  const Eigen::VectorXd& extra = fx.ws.qp.tau_extra;
+  // Normal equations of min ||tau + J^T f||: J (tau + J^T f) = 0 (to the regularization).
+  CHECK((fx.ws.J * extra).norm() < 1e-4 * tau_theta.norm());
+  // What is left is the projection of tau_theta on null(J), computed independently by an SVD.
+  Eigen::JacobiSVD<Eigen::MatrixXd> svd(fx.ws.J, Eigen::ComputeFullV);
+  const Eigen::MatrixXd N = svd.matrixV().rightCols(5);
+  // (to 1e-3 of its size: lambda / sigma_min(J)^2 of the regularization)
+  CHECK_THAT(extra, is_approx(N * (N.transpose() * tau_theta), 1e-3));
+  CHECK(extra.norm() > 1.0);  // the swivel part survives
+  // Zero tau_theta: nothing to cancel.
+  REQUIRE(solve_canceling_qp(Eigen::VectorXd::Zero(17), fx.opt, fx.ws.qp) == qp_status::optimal);
+  CHECK(fx.ws.qp.tau_extra.isZero(0.0));
+}

@@ -1,0 +1,62 @@
+// The composition test of Wu & Popovic 2010's lower level (controllers/end_effector/): the
+// standing controller on the Table 3 biped, through the torque actuator it commands, with each
+// integrator and terrain, under the distance objective and the Wang 2009 terms that need no
+// particular body (they read the step view: COM, torques, momentum), each alone and summed.
+#include <catch2/catch.hpp>
+
+#include <cmath>
+
+#include "gaitsynth/actuators/torque.hpp"
+#include "gaitsynth/contact/flat_terrain.hpp"
+#include "gaitsynth/contact/slope_terrain.hpp"
+#include "gaitsynth/controllers/end_effector/standing_balance.hpp"
+#include "gaitsynth/integrators/odeint.hpp"
+#include "gaitsynth/integrators/semi_implicit_euler.hpp"
+#include "gaitsynth/models/wu2010.hpp"
+#include "gaitsynth/objectives/distance.hpp"
+#include "gaitsynth/objectives/wang2009/angular_momentum.hpp"
+#include "gaitsynth/objectives/wang2009/failure.hpp"
+#include "gaitsynth/objectives/wang2009/power.hpp"
+#include "gaitsynth/objectives/wang2009/velocity.hpp"
+#include "gaitsynth/objectives/weighted_sum.hpp"
+#include "gaitsynth/rollout/rollout.hpp"
+
+using namespace gaitsynth;
+
+namespace {
+
+template <class Integrator, class Terrain, class Objective>
+rollout_result stand(const floating_model& m, const Terrain& ground, const Objective& obj) {
+  standing_balance<> c(m);
+  rollout_options o;
+  o.duration = 0.05;
+  o.initial_state = make_state(m);  // the neutral pose, feet on the ground below
+  place_on_terrain(m, ground, o.initial_state.q);
+  auto scratch = make_rollout_scratch(m);
+  const auto p = c.gains().to_array();
+  return rollout(m, torque_actuator{}, c, obj, ground, Integrator{}, p, o, scratch);
+}
+
+}  // namespace
+
+TEST_CASE(
+    "the end-effector standing controller composes with integrators, terrains and "
+    "objectives",
+    "[rollout][compose][end_effector]") {
+  const floating_model m = wu2010_biped();
+  const auto check = [](const rollout_result& r) {
+    CHECK(r.reason == stop_reason::horizon);
+    CHECK(std::isfinite(r.cost));
+  };
+  check(stand<semi_implicit_euler>(m, flat_terrain{}, distance_objective()));
+  check(stand<semi_implicit_euler>(m, slope_terrain(0.05), distance_objective()));
+  check(stand<odeint_rk4>(m, flat_terrain{}, distance_objective()));
+  check(stand<semi_implicit_euler>(m, flat_terrain{}, wang2009::velocity()));
+  check(stand<semi_implicit_euler>(m, flat_terrain{}, wang2009::failure()));
+  check(stand<semi_implicit_euler>(m, flat_terrain{}, wang2009::power()));
+  check(stand<semi_implicit_euler>(m, flat_terrain{}, wang2009::angular_momentum(m)));
+  check(stand<odeint_rk4>(
+      m, slope_terrain(0.05),
+      weighted_sum<wang2009::velocity, wang2009::failure, wang2009::power>(
+          {1.0, 100.0, 0.01}, wang2009::velocity(), wang2009::failure(), wang2009::power())));
+}
