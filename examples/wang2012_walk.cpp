@@ -10,7 +10,7 @@
 //                 [--init FILE] [--horizon S] [--sigma S] [--population N] [--check-seconds S]
 //                 [--robust-starts K] [--start-sigma S] [--weight TERM=W]...
 //                 [--robust-pushes K] [--push-force N] [--effort metabolic|torque|activation]
-//                 [--weaken MTU=F]... [--gait walk|run]
+//                 [--weaken MTU=F]... [--gait walk|run] [--muscle-svg FILE [--muscle MTU]]
 //   wang2012_walk --resume DIR [--threads N]
 //   wang2012_walk --replay FILE [--check-seconds S] [--out DIR]
 //
@@ -82,8 +82,9 @@ struct cli {
   double sigma = 0.005;   // Sec. 5
   int population = 50;    // Sec. 5
   int robust_starts = 0;
-  double start_sigma = 0.05;  // rad/s, the claim tests' perturbation
-  std::string muscle_svg;     // Figure 5: lGAS excitation, activation, force, fiber length
+  double start_sigma = 0.05;   // rad/s, the claim tests' perturbation
+  std::string muscle_svg;      // Figure 5: lGAS excitation, activation, force, fiber length
+  std::string muscle = "GAS";  // the MTU --muscle-svg draws
   std::string command, out_arg;
   nlohmann::json options;
   viz_outputs viz;
@@ -146,6 +147,8 @@ cli parse(int argc, char** argv) {
   app.add_option("--muscle-svg", c.muscle_svg,
                  "write the left GAS's excitation, activation, force and fiber length over the "
                  "gait cycle (Figure 5) as SVG");
+  app.add_option("--muscle", c.muscle, "the MTU --muscle-svg draws (left leg; Figure 5: GAS)")
+      ->check(CLI::IsMember({"GLU", "HFL", "VAS", "TA", "SOL", "HAM", "RF", "GAS"}));
   example_cli::add_viewer_flags(app, c.viz);
   example_cli::parse(app, argc, argv);
   if (!resume.empty()) {
@@ -335,8 +338,13 @@ int run_with(const cli& c, const floating_model& m, const std::vector<musculoten
       gas["cycles"] = g.num_cycles();
     }
     if (!c.muscle_svg.empty()) {
+      if (c.muscle != "GAS") {
+        gp.cycles.channels = muscle_gait_channels(muscles, "l" + c.muscle);
+        gp.title = "Wang et al. 2012: left " + c.muscle + " over the gait cycle";
+      }
       std::ostringstream os;
-      write_gait_plot_svg(g, os, gp, m.name);
+      write_gait_plot_svg(c.muscle == "GAS" ? g : gait_cycles(m, steady, gp.cycles), os, gp,
+                          m.name);
       viz_detail::save_text(c.muscle_svg, os.str(), "--muscle-svg");
     }
   }
