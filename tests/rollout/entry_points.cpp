@@ -470,6 +470,8 @@ TEST_CASE("entry points: CMA-ES, SDS and their driver", "[optimizers][bad_input]
   CHECK_THROWS_WITH(cma({.sigma0 = -0.25}), Contains("sigma0") && Contains("-0.25"));
   CHECK_THROWS_WITH(cma({.sigma0 = nan_}), Contains("sigma0") && Contains("nan"));
   CHECK_THROWS_WITH(cma({.population_size = 1}), Contains("population_size") && Contains("got 1"));
+  CHECK_THROWS_WITH(cma({.population_size = 2000000000}),
+                    Contains("population_size 2000000000") && Contains("96 GB"));
   CHECK_THROWS_WITH(cma({.x0 = Eigen::Vector3d(0.5, 0.5, 0.5)}),
                     Contains("x0") && Contains(got(2, 3)));
   CHECK_THROWS_WITH(cma({.x0 = Eigen::Vector2d(0.5, nan_)}),

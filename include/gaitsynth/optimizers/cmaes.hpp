@@ -193,6 +193,12 @@ class cmaes {
     const int lambda = opt_.population_size > 0
                            ? opt_.population_size
                            : 4 + static_cast<int>(std::floor(3.0 * std::log(n_)));
+    // The samples (Z, Y and the candidates: 3 lambda n doubles) must fit in memory: a population
+    // beyond any machine's would otherwise end in std::bad_alloc or the OOM killer, not a message.
+    const double sample_bytes = 3.0 * 8.0 * lambda * static_cast<double>(n_);
+    check_argument(sample_bytes <= 16e9, "cmaes_options::population_size ", lambda, " with ", n_,
+                   " parameters needs ", sample_bytes / 1e9,
+                   " GB for its samples; the limit is 16 GB");
     p_ = cmaes_parameters::make(n_, lambda, opt_.active, opt_.eigen_gap);
     max_iterations_ =
         opt_.stop.max_iterations > 0
