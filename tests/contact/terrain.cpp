@@ -358,7 +358,7 @@ TEST_CASE("steps_terrain: bad input throws, naming the value", "[contact][terrai
   CHECK_THROWS_WITH(steps_terrain({{1.0, 0.1}, {1.0, 0.2}}),
                     Contains("strictly increasing") && Contains("x_edges[1] = 1"));
   CHECK_THROWS_WITH(steps_terrain({{kNaN, 0.1}}), Contains("x_start"));
-  CHECK_THROWS_WITH(steps_terrain({{0.0, kInf}}), Contains("cell (0, 0)"));
+  CHECK_THROWS_WITH(steps_terrain({{0.0, kInf}}), Contains("step 0 height"));
   CHECK_THROWS_WITH(steps_terrain({{0.0, 0.1}}, kNaN), Contains("base_height"));
   CHECK_THROWS_WITH(steps_terrain::stairs(0.0, 0.0, 0.1, 3), Contains("run"));
   CHECK_THROWS_WITH(steps_terrain::stairs(0.0, 0.3, 0.1, 0), Contains("count"));

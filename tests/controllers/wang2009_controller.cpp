@@ -53,6 +53,10 @@ TEST_CASE("wang2009 controller: 184 named parameters, checked at bind", "[contro
   p.pop_back();
   CHECK_THROWS_WITH(c.bind(p), Catch::Contains("184"));
   CHECK_THROWS_WITH(wang2009_controller(wu2010_biped()), Catch::Contains("wu2010"));
+  wang2009_controller d(m);
+  d.landing_foot_angle = std::nan("");
+  CHECK_THROWS_WITH(d.bind(wang2009_table2_parameters(m, d)),
+                    Catch::Contains("landing_foot_angle") && Catch::Contains("nan"));
 }
 
 TEST_CASE("wang2009 controller: states 2 and 3 are the mirror images of 0 and 1",

@@ -70,6 +70,8 @@ class steps_terrain {
     for (std::size_t k = 0; k < steps.size(); ++k) {
       check_argument(std::isfinite(steps[k].x_start), "steps_terrain: step ", k,
                      " x_start is not finite (", steps[k].x_start, ")");
+      check_argument(std::isfinite(steps[k].height), "steps_terrain: step ", k,
+                     " height is not finite (", steps[k].height, ")");
       xe_.push_back(steps[k].x_start);
       h_(static_cast<Eigen::Index>(k), 0) = steps[k].height;
     }

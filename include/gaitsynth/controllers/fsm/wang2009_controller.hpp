@@ -118,6 +118,10 @@ class wang2009_controller {
 
   void bind(std::span<const double> p) {
     check_parameters(p, num_parameters(), "wang2009_controller parameters");
+    // A public setting: a NaN would silently keep 1 -> 2 from ever firing.
+    check_argument(std::isfinite(landing_foot_angle),
+                   "wang2009_controller: landing_foot_angle must be finite, got ",
+                   landing_foot_angle);
     std::copy(p.begin(), p.end(), p_.begin());
     for (int s = 0; s < 2; ++s) {
       for (int r = 0; r < params_.nj; ++r) {
