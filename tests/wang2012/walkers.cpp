@@ -46,15 +46,32 @@ struct reported {
   int perturbed_walked;  ///< of the 10 perturbed starts, those that walk 100 s
 };
 
-/// The muscles a saved walker was optimized with: Geyer & Herr's, weakened as its info says
-/// (Sec. 6.2's weakness studies).
-std::vector<musculotendon::unit> muscles_of(const floating_model& m,
-                                            const wang2012_saved_controller& saved) {
-  auto units = musculotendon::geyer_herr_leg_muscles(m);
-  for (const auto& [name, f] : saved.info.value("weaken", std::map<std::string, double>{}))
-    musculotendon::scale_max_isometric_force(units, name, f);
-  return units;
-}
+/// A saved walker ready to re-simulate: the model, the saved controller, the muscles it was
+/// optimized with (Geyer & Herr's, weakened as its info says: Sec. 6.2's weakness studies) and
+/// the controller. Not copyable: the members are built in order from `file`.
+struct saved_walker {
+  explicit saved_walker(const char* file)
+      : saved(load_wang2012_controller(std::string(GAITSYNTH_SOURCE_DIR) +
+                                       "/data/wang2012/walkers/" + file)),
+        act(muscles(m, saved)),
+        c(m) {}
+  saved_walker(const saved_walker&) = delete;
+  saved_walker& operator=(const saved_walker&) = delete;
+
+  static std::vector<musculotendon::unit> muscles(const floating_model& m,
+                                                  const wang2012_saved_controller& s) {
+    auto units = musculotendon::geyer_herr_leg_muscles(m);
+    for (const auto& [name, f] : s.info.value("weaken", std::map<std::string, double>{}))
+      musculotendon::scale_max_isometric_force(units, name, f);
+    return units;
+  }
+  std::span<const double> parameters() const { return saved.parameters; }
+
+  floating_model m = wang2012_humanoid();
+  wang2012_saved_controller saved;
+  musculotendon_actuator act;
+  wang2012_reflex_controller c;
+};
 
 /// What Sec. 6.2 compares walkers by, from 20 s of walking (the left leg after the first 2 s):
 /// the four angles of analysis/sagittal_gait_features.hpp and each MTU's mean activation.
@@ -64,11 +81,8 @@ struct study_numbers {
 };
 
 study_numbers study_numbers_of(const char* file) {
-  const std::string path = std::string(GAITSYNTH_SOURCE_DIR) + "/data/wang2012/walkers/" + file;
-  const floating_model m = wang2012_humanoid();
-  const wang2012_saved_controller saved = load_wang2012_controller(path);
-  const musculotendon_actuator act(muscles_of(m, saved));
-  const wang2012_reflex_controller c(m);
+  const saved_walker w(file);
+  const floating_model& m = w.m;
   rollout_options opt = wang2009_rollout_options(m);
   opt.duration = 20.0;
   trajectory tr;
@@ -77,9 +91,8 @@ study_numbers study_numbers_of(const char* file) {
   muscle_recording mr;
   auto scratch = make_rollout_scratch(m);
   const rollout_result r =
-      rollout(m, act, c, distance_objective(), flat_terrain{}, semi_implicit_euler{},
-              std::span<const double>(saved.parameters), opt, scratch,
-              musculotendon_recorder(act, &mr, opt.record_every));
+      rollout(m, w.act, w.c, distance_objective(), flat_terrain{}, semi_implicit_euler{},
+              w.parameters(), opt, scratch, musculotendon_recorder(w.act, &mr, opt.record_every));
   REQUIRE(r.reason == stop_reason::horizon);
   std::erase_if(tr.frames, [](const trajectory_frame& f) { return f.t < 2.0; });
   gait_cycle_options go;
@@ -94,13 +107,12 @@ study_numbers study_numbers_of(const char* file) {
 }
 
 void check_walker(const reported& w) {
-  const std::string path = std::string(GAITSYNTH_SOURCE_DIR) + "/data/wang2012/walkers/" + w.file;
-  const floating_model m = wang2012_humanoid();
-  const wang2012_saved_controller saved = load_wang2012_controller(path);
-  // A weakened walker (Sec. 6.2) walks with the muscles it was optimized with.
-  const musculotendon_actuator act(muscles_of(m, saved));
-  const wang2012_reflex_controller c(m);
-  const std::span<const double> p(saved.parameters);
+  const saved_walker walker(w.file);
+  const floating_model& m = walker.m;
+  const musculotendon_actuator& act = walker.act;
+  const wang2012_reflex_controller& c = walker.c;
+  const std::span<const double> p = walker.parameters();
+  const wang2012_saved_controller& saved = walker.saved;
   rollout_options opt = wang2009_rollout_options(m);  // as examples/wang2012_walk.cpp
   auto scratch = make_rollout_scratch(m);
 #ifdef GAITSYNTH_SANITIZED_BUILD

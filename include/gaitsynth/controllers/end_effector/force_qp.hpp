@@ -115,6 +115,12 @@ inline void factor_pair_jacobian(const Eigen::Ref<const Eigen::MatrixXd>& J,
   ws.JtU.noalias() = J.transpose() * ws.U;
 }
 
+/// Adds the file comment's lambda = regularization x max(largest diagonal entry, 1) to H's diagonal
+/// (both QPs here use the one rule).
+inline void add_regularization(Eigen::MatrixXd& H, const force_qp_options& opt) {
+  H.diagonal().array() += opt.regularization * std::max(H.diagonal().maxCoeff(), 1.0);
+}
+
 /// Eq. 5 after factor_pair_jacobian. A and b are ws.A and ws.b (assemble_eq4), W's diagonal is
 /// ws.w; pinned[j] != 0 removes action frame j's rows (Sec. 6.3); tau_max has nj entries (> 0).
 /// Writes ws.f and ws.tau = J^T f; returns the status (on failure f and tau are zero).
@@ -151,8 +157,7 @@ inline qp_status solve_force_qp(std::span<const unsigned char> pinned,
   dense_qp& qp = ws.qp;
   qp.H.noalias() = AU.transpose() * AU;
   qp.g.noalias() = -AU.transpose() * ws.br.head(r);
-  const double lambda = opt.regularization * std::max(qp.H.diagonal().maxCoeff(), 1.0);
-  qp.H.diagonal().array() += lambda;
+  add_regularization(qp.H, opt);
   qp.C.topRows(ws.K3) = ws.U;
   qp.C.bottomRows(ws.nj) = ws.JtU;
   qp.c_lower.head(ws.K3).setConstant(-opt.f_max);
@@ -187,8 +192,7 @@ inline qp_status solve_canceling_qp(const Eigen::Ref<const Eigen::VectorXd>& tau
   dense_qp& qp = ws.cancel;
   qp.H.noalias() = ws.JtU.transpose() * ws.JtU;
   qp.g.noalias() = ws.JtU.transpose() * tau_theta;
-  const double lambda = opt.regularization * std::max(qp.H.diagonal().maxCoeff(), 1.0);
-  qp.H.diagonal().array() += lambda;
+  add_regularization(qp.H, opt);
   qp.C = ws.U;
   qp.c_lower.setConstant(-opt.f_max);
   qp.c_upper.setConstant(opt.f_max);
