@@ -6,13 +6,21 @@
 //   BM_LowerLevelTick/pinned:1             double stance: the 8 foot frames pinned (Sec. 6.3)
 //   BM_LowerLevelTick/pinned:0             nothing touches: every frame's rows in the objective
 //   BM_PairJacobianAndQR                   J and its QR alone
+//   BM_PlanHalfCycle                       the planner (Sec. 4, appendix A), once per half-cycle,
+//                                          on a seeded random height field
+//   BM_PlanQuery                           the plan's link targets at one time, once per tick
 // GCC 12 with -march=native warns falsely inside avx512fintrin.h (see benchmarks/qp/qp.cpp).
 #if defined(__GNUC__) && !defined(__clang__)
 #pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
 #endif
 #include <benchmark/benchmark.h>
 
+#include <random>
+
+#include <gaitsynth/contact/height_field_terrain.hpp>
+#include <gaitsynth/controllers/end_effector/half_cycle_plan.hpp>
 #include <gaitsynth/controllers/end_effector/lower_level.hpp>
+#include <gaitsynth/detail/uniform01.hpp>
 #include <gaitsynth/models/wu2010.hpp>
 
 using namespace gaitsynth;
@@ -74,7 +82,52 @@ void BM_PairJacobianAndQR(benchmark::State& state) {
   }
 }
 
+/// A 4 m x 4 m height field at 5 cm with seeded heights of 0-5 cm around the walk, the inputs
+/// of a forward step, and a first plan (the second uses it for the upper body's deviation).
+struct plan_fixture {
+  height_field_terrain ground = [] {
+    std::mt19937_64 rng(2010);
+    Eigen::MatrixXd h(81, 81);
+    for (Eigen::Index j = 0; j < h.cols(); ++j)
+      for (Eigen::Index i = 0; i < h.rows(); ++i) h(i, j) = 0.05 * detail::uniform01(rng);
+    return height_field_terrain(Eigen::Vector2d(-2.0, -2.0), 0.05, h);
+  }();
+  planner_setup setup;
+  planner_parameters omega;
+  planner_input in;
+  task_goal goal{0.0, 0.0, 0.65};
+  half_cycle_plan first;
+  plan_fixture() {
+    in.stance_foot.position = vec3(0.0, 0.1, 0.11);
+    in.swing_foot.position = vec3(-0.3, -0.1, 0.11);
+    in.upper_body.position = vec3(-0.15, 0.0, 1.5);
+    first = plan_half_cycle(goal, omega, setup, in, ground);
+  }
+};
+
+void BM_PlanHalfCycle(benchmark::State& state) {
+  plan_fixture fx;
+  for (auto _ : state) {
+    const half_cycle_plan p =
+        plan_half_cycle(fx.goal, fx.omega, fx.setup, fx.in, fx.ground, &fx.first);
+    benchmark::DoNotOptimize(&p);
+  }
+}
+
+void BM_PlanQuery(benchmark::State& state) {
+  plan_fixture fx;
+  std::array<link_target, 3> links;
+  double t = 0.0;
+  for (auto _ : state) {
+    fx.first.link_targets(t, links);
+    benchmark::DoNotOptimize(links.data());
+    t = t < 0.5 ? t + 1.0 / 64.0 : 0.0;
+  }
+}
+
 }  // namespace
 
+BENCHMARK(BM_PlanHalfCycle);
+BENCHMARK(BM_PlanQuery);
 BENCHMARK(BM_LowerLevelTick)->ArgName("pinned")->Arg(1)->Arg(0);
 BENCHMARK(BM_PairJacobianAndQR);
