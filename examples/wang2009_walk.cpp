@@ -524,7 +524,9 @@ int main(int argc, char** argv) try {
 #ifdef GAITSYNTH_HAVE_MPI
   std::optional<mpi_environment> mpi;
   if (c.mpi) {
-    check_argument(c.replay.empty() && !c.simbicon, "--mpi: only an optimization runs under MPI");
+    check_argument(c.replay.empty() && !c.simbicon && c.iterations > 0,
+                   "--mpi: only an optimization runs under MPI (not --replay, --simbicon or "
+                   "--iterations 0)");
     mpi.emplace(argc, argv);
   }
   const bool writes = !c.mpi || mpi_environment::rank() == 0;  // MPI: rank 0 writes the run
