@@ -83,7 +83,7 @@ struct cli {
   int population = 50;    // Sec. 5
   int robust_starts = 0;
   double start_sigma = 0.05;   // rad/s, the claim tests' perturbation
-  std::string muscle_svg;      // Figure 5: lGAS excitation, activation, force, fiber length
+  std::string muscle_svg;      // Figure 5: excitation, activation, force, fiber length
   std::string muscle = "GAS";  // the MTU --muscle-svg draws
   std::string command, out_arg;
   nlohmann::json options;
@@ -145,8 +145,8 @@ cli parse(int argc, char** argv) {
   app.add_option("--start-sigma", c.start_sigma, "joint-velocity perturbation of those, rad/s")
       ->check(example_cli::in_range(0.0, 10.0));
   app.add_option("--muscle-svg", c.muscle_svg,
-                 "write the left GAS's excitation, activation, force and fiber length over the "
-                 "gait cycle (Figure 5) as SVG");
+                 "write a left-leg MTU's (--muscle; Figure 5: GAS) excitation, activation, force "
+                 "and fiber length over the gait cycle as SVG");
   app.add_option("--muscle", c.muscle, "the MTU --muscle-svg draws (left leg; Figure 5: GAS)")
       ->check(CLI::IsMember({"GLU", "HFL", "VAS", "TA", "SOL", "HAM", "RF", "GAS"}));
   example_cli::add_viewer_flags(app, c.viz);
