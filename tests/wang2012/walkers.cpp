@@ -190,6 +190,33 @@ TEST_CASE("wang2012: min_torque walks 100 s at 1.25 m/s, from 8 of 10 perturbed 
                 .perturbed_walked = 8});
 }
 
+TEST_CASE("wang2012: min_act walks 100 s at 1.25 m/s, from 10 of 10 perturbed starts",
+          "[wang2012][claim]") {
+  check_walker({.file = "min_act.controller.json",
+                .speed = 1.2513,
+                .speed_on_target = true,
+                .perturbed_walked = 10});
+}
+
+TEST_CASE("wang2012: min_act activates its muscles less in total than nwalk (Sec. 6.2)",
+          "[wang2012][claim]") {
+#ifdef GAITSYNTH_SANITIZED_BUILD
+  return;  // the same code paths as the walks above; the Release suite checks the claim
+#endif
+  // "While the total amount of activations is reduced": the sum of the eight MTUs' mean
+  // activations, 1.60 against nwalk's 1.70 (the page's table). The paper's shift from GAS/SOL
+  // to VAS is not reproduced (the page says so), so it is not claimed here.
+  const auto total = [](const study_numbers& s) {
+    double sum = 0.0;
+    for (const auto& [name, a] : s.activation) sum += a;
+    return sum;
+  };
+  const double act = total(study_numbers_of("min_act.controller.json"));
+  const double normal = total(study_numbers_of("nwalk.controller.json"));
+  INFO("summed mean activation: min_act " << act << ", nwalk " << normal);
+  CHECK(act < 0.97 * normal);
+}
+
 TEST_CASE("wang2012: min_torque keeps TA more active than nwalk (Sec. 6.2)", "[wang2012][claim]") {
 #ifdef GAITSYNTH_SANITIZED_BUILD
   return;  // the same code paths as the walks above; the Release suite checks the claim
