@@ -1,7 +1,8 @@
 // The composition test of Wu & Popovic 2010's lower level (controllers/end_effector/): the
-// standing controller on the Table 3 biped, through the torque actuator it commands, with each
-// integrator and terrain, under the distance objective and the Wang 2009 terms that need no
-// particular body (they read the step view: COM, torques, momentum), each alone and summed.
+// standing controller (and once the cyclical controller, planned_walk) on the Table 3 biped,
+// through the torque actuator it commands, with each integrator and terrain, under the distance
+// objective and the Wang 2009 terms that need no particular body (they read the step view: COM,
+// torques, momentum), each alone and summed.
 #include <catch2/catch.hpp>
 
 #include <cmath>
@@ -9,6 +10,7 @@
 #include "gaitsynth/actuators/torque.hpp"
 #include "gaitsynth/contact/flat_terrain.hpp"
 #include "gaitsynth/contact/slope_terrain.hpp"
+#include "gaitsynth/controllers/end_effector/planned_walk.hpp"
 #include "gaitsynth/controllers/end_effector/standing_balance.hpp"
 #include "gaitsynth/integrators/odeint.hpp"
 #include "gaitsynth/integrators/semi_implicit_euler.hpp"
@@ -37,6 +39,19 @@ rollout_result stand(const floating_model& m, const Terrain& ground, const Objec
   return rollout(m, torque_actuator{}, c, obj, ground, Integrator{}, p, o, scratch);
 }
 
+/// The cyclical controller (planned_walk.hpp) holds its own copy of the terrain it plans on.
+template <class Integrator, class Terrain, class Objective>
+rollout_result walk(const floating_model& m, const Terrain& ground, const Objective& obj) {
+  const planned_walk<Terrain> c(m, ground);
+  rollout_options o;
+  o.duration = 0.05;
+  o.initial_state = make_state(m);
+  place_on_terrain(m, ground, o.initial_state.q);
+  auto scratch = make_rollout_scratch(m);
+  return rollout(m, torque_actuator{}, c, obj, ground, Integrator{}, c.default_parameters(), o,
+                 scratch);
+}
+
 }  // namespace
 
 TEST_CASE(
@@ -55,6 +70,7 @@ TEST_CASE(
   check(stand<semi_implicit_euler>(m, flat_terrain{}, wang2009::failure()));
   check(stand<semi_implicit_euler>(m, flat_terrain{}, wang2009::power()));
   check(stand<semi_implicit_euler>(m, flat_terrain{}, wang2009::angular_momentum(m)));
+  check(walk<odeint_rk4>(m, slope_terrain(0.05), wang2009::failure()));
   check(stand<odeint_rk4>(
       m, slope_terrain(0.05),
       weighted_sum<wang2009::velocity, wang2009::failure, wang2009::power>(

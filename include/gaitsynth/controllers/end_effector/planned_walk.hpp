@@ -1,0 +1,307 @@
+#pragma once
+/// \file controllers/end_effector/planned_walk.hpp
+/// The cyclical locomotion controller of Wu & Popovic 2010 (Sec. 7): the end-effector path
+/// planner (Sec. 4, appendix A; half_cycle_plan.hpp) over the lower level (Sec. 5, 6, appendix B;
+/// lower_level.hpp), with the parameters P_c = (Omega_0, Omega_1, Pi_0, Pi_1), one planner set
+/// and one lower-level set per half-cycle.
+///
+/// Schedule (Sec. 3, "planning occurs at the start of each half-cycle"; A.1: a half-cycle lasts
+/// t_h): half-cycle k starts at t_0 + k t_h, t_0 the time of the first command; at the first
+/// command at or after that time (1e-9 s tolerance) the controller swaps stance and swing (k even:
+/// options.first_stance stands; k odd: the other foot) and plans it with plan_half_cycle from the
+/// goal G, Omega_{k mod 2}, the current poses of the upper body (its planned point) and feet, the
+/// previous half-cycle's plan (its swing becomes this stance foot's tail; its target gives
+/// dq'_ub,eh) and the terrain. Every command then queries the plan at t - (t_0 + k t_h) and runs
+/// the lower level with Pi_{k mod 2}. The first half-cycle has no previous plan: its stance foot
+/// stays where it stands and psi_f' is the upper body's yaw.
+///
+/// Terrain: a controller sees no terrain through sensors (controllers/sensors.hpp), so it holds a
+/// copy of one, given at construction (template parameter T, default flat_terrain). It must be
+/// the rollout's terrain for terrain-aware planning to mean anything; planner_setup's
+/// terrain_awareness = false plans terrain-blind instead (the stance foot's ground plane).
+///
+/// Parameters (bind), one flat vector, in this order (parameter_names() spells them out):
+///   Omega_0   25 values, planned_walk_parameters.hpp's planner_vector_names (Table 1's planner
+///             unknowns; the others come from options.planner)
+///   Omega_1   25 more, only with planned_walk_symmetry::asymmetric
+///   Pi_0      12 values, end_effector_gains::names (Table 1's ten coefficients, W's upper-body
+///             weight and appendix B's rho)
+///   Pi_1      12 more, unless planned_walk_symmetry::mirrored
+/// Sizes: asymmetric 74, mirrored_planner 49 (Omega_1 = mirrored(Omega_0), two Pi: the paper's
+/// symmetric controllers, whose 46 unknowns are 25 + 2 x 10 + h_max), mirrored 37 (one Pi too:
+/// every Pi coefficient is left/right symmetric, so mirroring Pi is the identity).
+///
+/// Output: joint torques (torque_actuator). Per command: a plan query and a lower-level tick, no
+/// allocation; once per half-cycle plan_half_cycle, which allocates nothing either (fixed-size
+/// plans; the state holds the current and the previous one).
+#include <Eigen/Core>
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <span>
+#include <stdexcept>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "gaitsynth/actuators/command_kind.hpp"
+#include "gaitsynth/contact/flat_terrain.hpp"
+#include "gaitsynth/contact/terrain.hpp"
+#include "gaitsynth/controllers/concept.hpp"
+#include "gaitsynth/controllers/end_effector/half_cycle_plan.hpp"
+#include "gaitsynth/controllers/end_effector/lower_level.hpp"
+#include "gaitsynth/controllers/end_effector/planned_walk_parameters.hpp"
+#include "gaitsynth/controllers/sensors.hpp"
+
+namespace gaitsynth {
+
+/// How Omega_1 and Pi_1 relate to Omega_0 and Pi_0.
+enum class planned_walk_symmetry {
+  asymmetric,        ///< Omega_0, Omega_1, Pi_0, Pi_1 all free (74 parameters)
+  mirrored_planner,  ///< Omega_1 = mirrored(Omega_0); Pi_0, Pi_1 free (49)
+  mirrored,          ///< Omega_1 = mirrored(Omega_0), Pi_1 = Pi_0 (37)
+};
+
+struct planned_walk_options {
+  /// s between commands; 0: every physics step. The paper runs at 64 Hz (appendix C); our lower
+  /// level is not stable with commands held over 1/64 s yet (standing_balance.hpp,
+  /// docs/reproductions/wu2010.md), so the default is every physics step. Must be < t_h.
+  double period = 0.0;
+  /// G: Sec. 8.3's forward walk (r = 0.65 m) along +x, facing +x.
+  task_goal goal{0.0, 0.0, 0.65};
+  planner_setup setup{};  ///< t_h = 0.55 s (Sec. 8.3) and the character's geometry
+  /// Omega's components outside the parameter vector (l of the control points, v of the upper
+  /// body's, alpha_a), and the Table 1 components default_parameters() starts from.
+  planner_parameters planner{};
+  end_effector_gains gains{};  ///< Pi for default_parameters()
+  planned_walk_symmetry symmetry = planned_walk_symmetry::mirrored_planner;
+  stance_side first_stance = stance_side::left;  ///< who stands in half-cycle 0 (Omega_0's)
+  lower_level_options lower{};
+};
+
+template <terrain T = flat_terrain, root_joint Root = floating_root>
+class planned_walk {
+ public:
+  struct state_type {
+    lower_level_workspace<Root> lower;
+    std::vector<link_target> targets;      ///< [upper body, left foot, right foot]
+    std::array<half_cycle_plan, 2> plans;  ///< the current plan and the previous one
+    int current = -1;                      ///< index of the current plan in plans; -1: none yet
+    std::int64_t half_cycle = -1;          ///< k of the current half-cycle; -1 before the first
+    double start_time = 0.0;               ///< t_0: time of the first command, s
+    double half_cycle_start = 0.0;         ///< t_0 + k t_h, s
+    double last_plan_time = 0.0;           ///< sensed time of the command that planned, s
+    stance_side stance = stance_side::left;
+    std::int64_t plans_made = 0;
+    std::int64_t commands = 0;
+    std::int64_t qp_failures = 0;  ///< ticks whose eq. 5 QP did not return optimal (torques 0)
+
+    const half_cycle_plan* plan() const { return current < 0 ? nullptr : &plans[current]; }
+  };
+  using options = planned_walk_options;
+  using terrain_type = T;
+
+  explicit planned_walk(const model<Root>& m, T ground = T{}, options o = {})
+      : opt_(std::move(o)),
+        terrain_(std::move(ground)),
+        layout_(biped_end_effector_layout(m)),
+        num_joint_dofs_(m.num_joint_dofs()) {
+    check_argument(std::isfinite(opt_.period) && opt_.period >= 0.0,
+                   "planned_walk: period must be finite and >= 0 s, got ", opt_.period);
+    validate(opt_.goal);
+    validate(opt_.setup);
+    check_argument(opt_.period < opt_.setup.t_h, "planned_walk: period (", opt_.period,
+                   " s) must be shorter than the half-cycle t_h (", opt_.setup.t_h, " s)");
+    const lower_level_options& l = opt_.lower;
+    check_argument(
+        std::isfinite(l.eps_p) && l.eps_p >= 0.0 && std::isfinite(l.eps_pdot) && l.eps_pdot >= 0.0,
+        "planned_walk: eps_p and eps_pdot must be finite and >= 0, got ", l.eps_p, " and ",
+        l.eps_pdot);
+    check_argument(std::isfinite(l.qp.f_max) && l.qp.f_max > 0.0,
+                   "planned_walk: f_max must be finite and > 0, got ", l.qp.f_max);
+    check_argument(std::isfinite(l.qp.regularization) && l.qp.regularization > 0.0,
+                   "planned_walk: regularization must be finite and > 0, got ",
+                   l.qp.regularization);
+    check_argument(layout_.num_links() == 3, "planned_walk: the layout needs 3 links, has ",
+                   layout_.num_links());
+    bind(default_parameters());
+  }
+
+  // ---- parameters ----
+  int num_planner_sets() const {
+    return opt_.symmetry == planned_walk_symmetry::asymmetric ? 2 : 1;
+  }
+  int num_gain_sets() const { return opt_.symmetry == planned_walk_symmetry::mirrored ? 1 : 2; }
+  std::size_t num_parameters() const {
+    return static_cast<std::size_t>(num_planner_sets()) * planner_vector_size +
+           static_cast<std::size_t>(num_gain_sets()) * end_effector_gains::size;
+  }
+  /// Index of Omega_h's first entry (h < num_planner_sets()) and Pi_h's (h < num_gain_sets()).
+  std::size_t planner_offset(int h) const {
+    return static_cast<std::size_t>(h) * planner_vector_size;
+  }
+  std::size_t gains_offset(int h) const {
+    return static_cast<std::size_t>(num_planner_sets()) * planner_vector_size +
+           static_cast<std::size_t>(h) * end_effector_gains::size;
+  }
+  /// "omega0.t_e", ..., "pi1.rho", in the vector's order.
+  std::vector<std::string> parameter_names() const {
+    std::vector<std::string> n;
+    n.reserve(num_parameters());
+    for (int h = 0; h < num_planner_sets(); ++h)
+      for (const char* s : planner_vector_names) n.push_back("omega" + std::to_string(h) + "." + s);
+    for (int h = 0; h < num_gain_sets(); ++h)
+      for (const char* s : end_effector_gains::names)
+        n.push_back("pi" + std::to_string(h) + "." + s);
+    return n;
+  }
+  /// options.planner for every Omega (Omega_1 mirrored, which leaves the default unchanged) and
+  /// options.gains for every Pi.
+  std::vector<double> default_parameters() const {
+    std::vector<double> p(num_parameters());
+    const auto om = to_planner_vector(opt_.planner);
+    const auto om1 = to_planner_vector(mirrored(opt_.planner));
+    const auto pi = opt_.gains.to_array();
+    for (int h = 0; h < num_planner_sets(); ++h) {
+      const auto& src = h == 0 ? om : om1;
+      std::copy(src.begin(), src.end(), p.begin() + static_cast<std::ptrdiff_t>(planner_offset(h)));
+    }
+    for (int h = 0; h < num_gain_sets(); ++h)
+      std::copy(pi.begin(), pi.end(), p.begin() + static_cast<std::ptrdiff_t>(gains_offset(h)));
+    return p;
+  }
+
+  /// \throws std::invalid_argument naming the parameter (name and index) and its value for a wrong
+  /// size, a non-finite value, a negative gain, or a planner value validate(planner_parameters)
+  /// refuses (t_e < 0, gamma or a swing control point's u outside [0, 1]). Leaves the controller
+  /// unchanged when it throws.
+  void bind(std::span<const double> p) {
+    check_size(static_cast<std::ptrdiff_t>(p.size()), static_cast<std::ptrdiff_t>(num_parameters()),
+               "planned_walk parameters");
+    for (std::size_t i = 0; i < p.size(); ++i)
+      if (!std::isfinite(p[i]))
+        throw std::invalid_argument("planned_walk: parameter " + std::to_string(i) + " (" +
+                                    parameter_names()[i] + ") is not finite (" +
+                                    std::to_string(p[i]) + ")");
+    std::array<planner_parameters, 2> omega;
+    for (int h = 0; h < num_planner_sets(); ++h) {
+      omega[h] =
+          from_planner_vector(p.subspan(planner_offset(h), planner_vector_size), opt_.planner);
+      try {
+        validate(omega[h]);
+      } catch (const std::invalid_argument& e) {
+        throw std::invalid_argument("planned_walk: Omega_" + std::to_string(h) + " (parameters " +
+                                    std::to_string(planner_offset(h)) + "...): " + e.what());
+      }
+    }
+    if (num_planner_sets() == 1) omega[1] = mirrored(omega[0]);
+    std::array<end_effector_gains, 2> pi;
+    for (int h = 0; h < num_gain_sets(); ++h) {
+      const auto g = p.subspan(gains_offset(h), end_effector_gains::size);
+      for (std::size_t i = 0; i < g.size(); ++i)
+        check_argument(g[i] >= 0.0, "planned_walk: parameter ", gains_offset(h) + i, " (pi", h, ".",
+                       end_effector_gains::names[i], ") must be >= 0, got ", g[i]);
+      pi[h] = end_effector_gains::from(g);
+    }
+    if (num_gain_sets() == 1) pi[1] = pi[0];
+    omega_ = omega;
+    gains_ = pi;
+  }
+  /// Omega and Pi of half-cycle parity h (0: even half-cycles, first_stance standing).
+  const planner_parameters& planner(int h) const { return omega_[h]; }
+  const end_effector_gains& gains(int h) const { return gains_[h]; }
+
+  const options& opts() const { return opt_; }
+  const T& ground() const { return terrain_; }
+  const end_effector_layout& layout() const { return layout_; }
+  double half_cycle_duration() const { return opt_.setup.t_h; }
+  double period() const { return opt_.period; }
+  static constexpr command_kind output_kind() { return command_kind::joint_torque; }
+  int command_size(const model<Root>& m) const { return m.num_joint_dofs(); }
+  /// The stance foot (0 left, 1 right) for the recorder; -1 before the first command.
+  int discrete_state(const state_type& st) const {
+    return st.half_cycle < 0 ? -1 : (st.stance == stance_side::left ? 0 : 1);
+  }
+
+  // ---- state ----
+  state_type make_state(const model<Root>& m) const {
+    check_size(m.num_joint_dofs(), num_joint_dofs_, "planned_walk: model joint DOFs");
+    state_type st{make_lower_level_workspace(m, layout_),
+                  std::vector<link_target>(layout_.link_body.size()),
+                  {}};
+    st.stance = opt_.first_stance;
+    return st;
+  }
+  void reset_state(const model<Root>&, state_type& st) const {
+    st.current = -1;
+    st.half_cycle = -1;
+    st.start_time = st.half_cycle_start = st.last_plan_time = 0.0;
+    st.stance = opt_.first_stance;
+    st.plans_made = st.commands = st.qp_failures = 0;
+  }
+
+  /// Half-cycle k's stance foot.
+  stance_side stance_of(std::int64_t k) const {
+    const stance_side other =
+        opt_.first_stance == stance_side::left ? stance_side::right : stance_side::left;
+    return k % 2 == 0 ? opt_.first_stance : other;
+  }
+
+  void command(const sensors<Root>& s, state_type& st, Eigen::Ref<Eigen::VectorXd> cmd) const {
+    ++st.commands;
+    if (!s.q().allFinite() || !s.v().allFinite()) {  // a diverged state: nothing to plan from
+      cmd.head(num_joint_dofs_).setZero();
+      return;
+    }
+    if (st.half_cycle < 0) st.start_time = s.t;
+    const double t_h = opt_.setup.t_h;
+    const auto k = static_cast<std::int64_t>(std::floor((s.t - st.start_time) / t_h + 1e-9 / t_h));
+    if (k != st.half_cycle) plan(s, st, k < 0 ? 0 : k);
+    const half_cycle_plan& p = st.plans[static_cast<std::size_t>(st.current)];
+    p.link_targets(std::max(0.0, s.t - st.half_cycle_start), st.targets);
+    const end_effector_gains& g = gains_[static_cast<std::size_t>(st.half_cycle % 2)];
+    const Eigen::VectorXd& tau = lower_level_torques(s.model(), layout_, g, opt_.lower, s.q(),
+                                                     s.v(), st.targets, s.contact_active, st.lower);
+    if (st.lower.qp.status != qp_status::optimal) ++st.qp_failures;
+    cmd.head(num_joint_dofs_) = tau;
+  }
+
+ private:
+  /// Starts half-cycle k: swaps stance and swing, plans from the sensed poses.
+  void plan(const sensors<Root>& s, state_type& st, std::int64_t k) const {
+    const auto& ws = s.workspace();
+    const int ub = layout_.link_body[0];
+    const stance_side stance = stance_of(k);
+    const int st_body = layout_.link_body[stance == stance_side::left ? 1 : 2];
+    const int sw_body = layout_.link_body[stance == stance_side::left ? 2 : 1];
+    planner_input in;
+    const mat3& R = ws.body_rotation[ub];
+    in.upper_body = {ws.body_position[ub] + R * opt_.setup.upper_body_point, R};
+    in.stance_foot = {ws.body_position[st_body], ws.body_rotation[st_body]};
+    in.swing_foot = {ws.body_position[sw_body], ws.body_rotation[sw_body]};
+    in.stance = stance;
+    in.previous_facing = std::atan2(R(1, 0), R(0, 0));
+    const half_cycle_plan* previous = st.plan();
+    if (previous != nullptr)
+      in.upper_body_deviation = upper_body_deviation(*previous, in.upper_body.position);
+    const int next = st.current < 0 ? 0 : 1 - st.current;
+    st.plans[static_cast<std::size_t>(next)] = plan_half_cycle(
+        opt_.goal, omega_[static_cast<std::size_t>(k % 2)], opt_.setup, in, terrain_, previous);
+    st.current = next;
+    st.half_cycle = k;
+    st.half_cycle_start = st.start_time + static_cast<double>(k) * opt_.setup.t_h;
+    st.last_plan_time = s.t;
+    st.stance = stance;
+    ++st.plans_made;
+  }
+
+  options opt_;
+  T terrain_;
+  end_effector_layout layout_;
+  int num_joint_dofs_ = 0;
+  std::array<planner_parameters, 2> omega_{};
+  std::array<end_effector_gains, 2> gains_{};
+};
+
+}  // namespace gaitsynth

@@ -1,0 +1,85 @@
+// Wu & Popovic 2010's cyclical controller (controllers/end_effector/planned_walk.hpp) allocates
+// nothing after set-up: a rollout with a command every physics step, counted from the objective's
+// first accumulate (after step 0's command, which made the first plan) to its last, runs 2880
+// lower-level ticks and two more plans (t = t_h and 2 t_h) inside the counted region.
+#include "support/counting_allocations.hpp"  // first: it configures Eigen
+
+#include <catch2/catch.hpp>
+
+#include "gaitsynth/actuators/torque.hpp"
+#include "gaitsynth/contact/flat_terrain.hpp"
+#include "gaitsynth/controllers/end_effector/planned_walk.hpp"
+#include "gaitsynth/integrators/semi_implicit_euler.hpp"
+#include "gaitsynth/models/wu2010.hpp"
+#include "gaitsynth/objectives/distance.hpp"
+#include "gaitsynth/rollout/rollout.hpp"
+
+using namespace gaitsynth;
+
+namespace {
+
+struct region {
+  long news_at_start = -1, news_at_end = -1, eigen_at_start = -1, eigen_at_end = -1;
+  long views = 0;
+};
+
+template <class Inner>
+struct counting_objective {
+  Inner inner;
+  region* r;
+  using accumulator_type = typename Inner::accumulator_type;
+  template <root_joint Root>
+  accumulator_type make_accumulator(const model<Root>& m) const {
+    return inner.make_accumulator(m);
+  }
+  template <class View>
+  void accumulate(accumulator_type& a, const View& v) const {
+    if (v.step == 0) {
+      r->news_at_start = g_news.load();
+      r->eigen_at_start = g_eigen_asserts.load();
+      Eigen::internal::set_is_malloc_allowed(false);
+    }
+    inner.accumulate(a, v);
+    ++r->views;
+    r->news_at_end = g_news.load();
+    r->eigen_at_end = g_eigen_asserts.load();
+  }
+  double finish(const accumulator_type& a, const rollout_outcome& out) const {
+    Eigen::internal::set_is_malloc_allowed(true);
+    return inner.finish(a, out);
+  }
+};
+
+/// Counts the plans the controller made (read through the observer's view of its state).
+struct plan_counter {
+  std::int64_t plans = 0;
+  template <class Ob>
+  void observe(const Ob& ob) {
+    plans = ob.controller_state_ptr->plans_made;
+  }
+};
+
+}  // namespace
+
+TEST_CASE("planned_walk ticks and plans without allocating", "[end_effector][allocation]") {
+  CHECK(counters_see_allocations());
+  const floating_model m = wu2010_biped();
+  const planned_walk<> c(m);
+  rollout_options o;
+  o.duration = 1.2;        // plans at 0, 0.55 and 1.1 s
+  o.detect_falls = false;  // the default parameters fall near 1.2 s; keep ticking regardless
+  o.initial_state = make_state(m);
+  place_on_terrain(m, flat_terrain{}, o.initial_state.q);
+  auto scratch = make_rollout_scratch(m);
+  region r;
+  const auto inner = distance_objective();
+  const counting_objective<std::decay_t<decltype(inner)>> obj{inner, &r};
+  plan_counter plans;
+  const auto res = rollout(m, torque_actuator{}, c, obj, flat_terrain{}, semi_implicit_euler(),
+                           c.default_parameters(), o, scratch, plans);
+  CHECK_FALSE(res.diverged());
+  CHECK(r.views == 2880);
+  CHECK(plans.plans == 3);
+  CHECK(r.news_at_end - r.news_at_start == 0);
+  CHECK(r.eigen_at_end - r.eigen_at_start == 0);
+}
