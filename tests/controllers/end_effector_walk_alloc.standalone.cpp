@@ -1,7 +1,8 @@
 // Wu & Popovic 2010's cyclical controller (controllers/end_effector/planned_walk.hpp) allocates
 // nothing after set-up: a rollout with a command every physics step, counted from the objective's
 // first accumulate (after step 0's command, which made the first plan) to its last, runs 2880
-// lower-level ticks and two more plans (t = t_h and 2 t_h) inside the counted region.
+// lower-level ticks and two more plans (t = t_h and 2 t_h) inside the counted region. Also with
+// Sec. 8.1's report read by the wu2010 objective and Sec. 8.2's helper force applied (h_max > 0).
 #include "support/counting_allocations.hpp"  // first: it configures Eigen
 
 #include <catch2/catch.hpp>
@@ -12,6 +13,7 @@
 #include "gaitsynth/integrators/semi_implicit_euler.hpp"
 #include "gaitsynth/models/wu2010.hpp"
 #include "gaitsynth/objectives/distance.hpp"
+#include "gaitsynth/objectives/wu2010/wu2010_objective.hpp"
 #include "gaitsynth/rollout/rollout.hpp"
 
 using namespace gaitsynth;
@@ -78,6 +80,37 @@ TEST_CASE("planned_walk ticks and plans without allocating", "[end_effector][all
   const auto res = rollout(m, torque_actuator{}, c, obj, flat_terrain{}, semi_implicit_euler(),
                            c.default_parameters(), o, scratch, plans);
   CHECK_FALSE(res.diverged());
+  CHECK(r.views == 2880);
+  CHECK(plans.plans == 3);
+  CHECK(r.news_at_end - r.news_at_start == 0);
+  CHECK(r.eigen_at_end - r.eigen_at_start == 0);
+}
+
+TEST_CASE(
+    "planned_walk with its report, the wu2010 objective and the helper force allocates "
+    "nothing",
+    "[end_effector][allocation][wu2010_cost]") {
+  CHECK(counters_see_allocations());
+  const floating_model m = wu2010_biped();
+  planned_walk_options po;
+  po.helper_force = true;
+  const planned_walk<> c(m, flat_terrain{}, po);
+  std::vector<double> p = c.default_parameters();
+  p[c.helper_offset()] = 200.0;
+  rollout_options o;
+  o.duration = 1.2;
+  o.detect_falls = false;
+  o.initial_state = make_state(m);
+  place_on_terrain(m, flat_terrain{}, o.initial_state.q);
+  auto scratch = make_rollout_scratch(m);
+  region r;
+  const auto inner = wu2010_objective(c.report_layout());
+  const counting_objective<std::decay_t<decltype(inner)>> obj{inner, &r};
+  plan_counter plans;
+  const auto res = rollout(m, torque_actuator{}, c, obj, flat_terrain{}, semi_implicit_euler(), p,
+                           o, scratch, plans);
+  CHECK_FALSE(res.diverged());
+  CHECK(std::isfinite(res.cost));
   CHECK(r.views == 2880);
   CHECK(plans.plans == 3);
   CHECK(r.news_at_end - r.news_at_start == 0);

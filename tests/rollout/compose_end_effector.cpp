@@ -2,7 +2,9 @@
 // standing controller (and once the cyclical controller, planned_walk) on the Table 3 biped,
 // through the torque actuator it commands, with each integrator and terrain, under the distance
 // objective and the Wang 2009 terms that need no particular body (they read the step view: COM,
-// torques, momentum), each alone and summed.
+// torques, momentum), each alone and summed, and planned_walk under the offline-optimization cost
+// of Wu & Popovic 2010 (objectives/wu2010/: its terms read the controller's report), with and
+// without the helper force.
 #include <catch2/catch.hpp>
 
 #include <cmath>
@@ -21,6 +23,7 @@
 #include "gaitsynth/objectives/wang2009/power.hpp"
 #include "gaitsynth/objectives/wang2009/velocity.hpp"
 #include "gaitsynth/objectives/weighted_sum.hpp"
+#include "gaitsynth/objectives/wu2010/wu2010_objective.hpp"
 #include "gaitsynth/rollout/rollout.hpp"
 
 using namespace gaitsynth;
@@ -52,6 +55,24 @@ rollout_result walk(const floating_model& m, const Terrain& ground, const Object
                  scratch);
 }
 
+/// planned_walk under the Wu 2010 cost terms, which are made from its report layout.
+template <class Integrator, class Terrain, class MakeObjective>
+rollout_result walk_wu2010(const floating_model& m, const Terrain& ground, MakeObjective make,
+                           double h_max = -1.0) {
+  planned_walk_options po;
+  po.helper_force = h_max >= 0.0;
+  const planned_walk<Terrain> c(m, ground, po);
+  std::vector<double> p = c.default_parameters();
+  if (po.helper_force) p[c.helper_offset()] = h_max;
+  rollout_options o;
+  o.duration = 0.05;
+  o.initial_state = make_state(m);
+  place_on_terrain(m, ground, o.initial_state.q);
+  auto scratch = make_rollout_scratch(m);
+  return rollout(m, torque_actuator{}, c, make(c.report_layout()), ground, Integrator{}, p, o,
+                 scratch);
+}
+
 }  // namespace
 
 TEST_CASE(
@@ -75,4 +96,33 @@ TEST_CASE(
       m, slope_terrain(0.05),
       weighted_sum<wang2009::velocity, wang2009::failure, wang2009::power>(
           {1.0, 100.0, 0.01}, wang2009::velocity(), wang2009::failure(), wang2009::power())));
+}
+
+TEST_CASE("planned_walk composes with the Wu 2010 cost terms and the helper force",
+          "[rollout][compose][end_effector][wu2010_cost]") {
+  const floating_model m = wu2010_biped();
+  const auto check = [](const rollout_result& r) {
+    CHECK(r.reason == stop_reason::horizon);
+    CHECK(std::isfinite(r.cost));
+    CHECK(r.cost >= 0.0);
+  };
+  using L = planned_walk_report_layout;
+  check(walk_wu2010<semi_implicit_euler>(m, flat_terrain{},
+                                         [](const L& l) { return wu2010::tracking_error(l); }));
+  check(walk_wu2010<semi_implicit_euler>(m, slope_terrain(0.05),
+                                         [](const L& l) { return wu2010::com_deviation(l); }));
+  check(walk_wu2010<odeint_rk4>(m, flat_terrain{}, [](const L&) { return wu2010::energy(); }));
+  check(walk_wu2010<semi_implicit_euler>(
+      m, flat_terrain{}, [](const L& l) { return wu2010::helper_penalty(l); }, 100.0));
+  check(walk_wu2010<odeint_rk4>(
+      m, slope_terrain(0.05), [](const L& l) { return wu2010_objective(l); }, 300.0));
+  // The helper penalty over L steps is w_h L {h_max}+ exactly.
+  const auto r = walk_wu2010<semi_implicit_euler>(
+      m, flat_terrain{}, [](const L& l) { return wu2010::helper_penalty(l); }, 100.0);
+  CHECK(r.cost == Approx(5e-3 * static_cast<double>(r.steps) * 100.0));
+  // Mixed with a term that reads no report.
+  check(walk_wu2010<semi_implicit_euler>(m, flat_terrain{}, [](const L& l) {
+    return weighted_sum<wu2010_objective_type, wang2009::failure>({1.0, 1.0}, wu2010_objective(l),
+                                                                  wang2009::failure());
+  }));
 }

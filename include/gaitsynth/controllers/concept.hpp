@@ -33,6 +33,18 @@
 ///   cc.initial_state(m, sim_state&)      overwrite the start state (start-state parameters,
 ///                                        Wang et al. 2009 Sec. 4 optimize it with the controller)
 ///   cc.discrete_state(st) -> int         FSM phase / active node, for the recorder
+///   cc.report(st) -> std::span<const double>
+///                                        per-step quantities the controller computed (a fixed-size
+///                                        span into st, no allocation) that an objective reads
+///                                        through step_view::controller_report (Wu & Popovic 2010
+///                                        Sec. 8.1: the frame-tracking errors)
+///   cc.report_names() -> range of strings  their names, report(st).size() of them
+///   cc.add_external_wrenches(m, std::as_const(st), ws)
+///                                        adds world wrenches to ws.f_ext (add_point_force, as
+///                                        contact and pushes) after the command, every physics
+///                                        step, reading only the poses of ws (workspace<Root>&,
+///                                        kinematics current); Wu & Popovic 2010 Sec. 8.2's helper
+///                                        force. Must not allocate.
 #include <Eigen/Core>
 #include <concepts>
 #include <cstddef>
@@ -41,6 +53,7 @@
 #include "gaitsynth/actuators/command_kind.hpp"
 #include "gaitsynth/actuators/concept.hpp"
 #include "gaitsynth/controllers/sensors.hpp"
+#include "gaitsynth/dynamics/workspace.hpp"
 #include "gaitsynth/error.hpp"
 #include "gaitsynth/model/model.hpp"
 #include "gaitsynth/model/state.hpp"
@@ -86,6 +99,19 @@ concept controller_with_reset_state = requires(const C& c, const model<Root>& m,
 template <class C>
 concept controller_with_discrete_state = requires(const C& c, const typename C::state_type& st) {
   { c.discrete_state(st) } -> std::convertible_to<int>;
+};
+
+template <class C>
+concept controller_with_report = requires(const C& c, const typename C::state_type& st) {
+  { c.report(st) } -> std::convertible_to<std::span<const double>>;
+  c.report_names();
+};
+
+template <class C, class Root>
+concept controller_with_external_wrenches = requires(const C& c, const model<Root>& m,
+                                                     const typename C::state_type& st,
+                                                     workspace<Root>& ws) {
+  c.add_external_wrenches(m, st, ws);
 };
 
 /// The validation every bind() does: size, then finiteness, naming the index and value.

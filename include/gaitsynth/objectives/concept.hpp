@@ -71,6 +71,10 @@ struct step_view {
   /// The controller's discrete state over [t, t + dt) (its discrete_state(): the FSM phase of
   /// Wang et al. 2009 Fig. 2, which E_land and E_sym read), -1 if it has none.
   int controller_phase = -1;
+  /// The controller's report over [t, t + dt) (its report(st) after this step's command: per-step
+  /// quantities such as Wu & Popovic 2010's frame-tracking errors, Sec. 8.1); empty if it has none.
+  /// Its layout is the controller's (report_names()).
+  std::span<const double> controller_report;
   const gaitsynth::workspace<Root>* workspace_ptr =
       nullptr;                                  ///< kinematics of (q, v) at t (read only)
   const contact_state* contacts_ptr = nullptr;  ///< contact evaluation at t (read only)

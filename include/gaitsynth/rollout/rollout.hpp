@@ -24,14 +24,15 @@
 ///      before sensing so that controllers see this step's contact flags;
 ///   4. the actuator's sensed values; push the sample into the delay history; once per controller
 ///      period, the controller writes the command (held in between). Controllers read the step's
-///      workspace and contact state through const views;
+///      workspace and contact state through const views; a controller with
+///      add_external_wrenches then adds its wrenches to ws.f_ext (every step);
 ///   5. the actuator maps the command to joint torques (optionally reading the workspace);
 ///      passive joint-limit torques are added; with options.implicit_joint_damping the joint
 ///      dampers are solved for implicitly here (ABA with an armature) and the torques become the
 ///      applied ones (rollout/options.hpp);
 ///   6. the objective accumulates this step (its view: state at t, torques and contact forces held
-///      over [t, t + dt), the controller's phase after this step's command); the observers
-///      observe it (the recorder stores a frame if due); stop if the objective is done;
+///      over [t, t + dt), the controller's phase and report after this step's command); the
+///      observers observe it (the recorder stores a frame if due); stop if the objective is done;
 ///   7. the integrator advances (q, v) with accelerations from ABA (torques and external wrenches
 ///      held constant over the step: zero-order hold, also for the stages of RK4). An actuator with
 ///      continuous dynamics (a derivative and a vector state) is integrated with (q, v) in the
@@ -405,7 +406,8 @@ rollout_result rollout_impl(const model<Root>& m, const Actuator& act, C& ctrl,
   // integrator that evaluates it first on the unchanged state (integrator_evaluating_state_first)
   // gets ABA on the kinematics of step 1, which are still current: nothing between step 1 and the
   // integrator can change s or ws's kinematics (controllers, actuators and objectives see them
-  // through const views), so aba()'s comparison of q and v with its cache is skipped.
+  // through const views; add_external_wrenches writes only ws.f_ext), so aba()'s comparison of q
+  // and v with its cache is skipped.
   bool kinematics_current = false;
   // With implicit joint damping, step 5 has solved the step's accelerations already (ws.ddq, for
   // the applied torques tau_total): the first evaluation on the step's state takes them.
@@ -509,6 +511,10 @@ rollout_result rollout_impl(const model<Root>& m, const Actuator& act, C& ctrl,
       ++calls;
       next_call = detail::command_step(calls, period, dt);
     }
+    // The controller's own external wrenches (Wu & Popovic 2010's helper force), every step
+    // since step 3 cleared ws.f_ext.
+    if constexpr (controller_with_external_wrenches<C, Root>)
+      ctrl.add_external_wrenches(m, std::as_const(ctrl_state), ws);
     // 5. actuator and passive torques
     actuator_torques(act, m, s, std::as_const(ws), Eigen::Ref<const Eigen::VectorXd>(scr.command),
                      std::as_const(act_state), Eigen::Ref<Eigen::VectorXd>(scr.tau.tail(nj)));
@@ -561,6 +567,8 @@ rollout_result rollout_impl(const model<Root>& m, const Actuator& act, C& ctrl,
     view.toe_top_contact = scr.contacts.any_toe_top_touching;
     if constexpr (controller_with_discrete_state<C>)
       view.controller_phase = static_cast<int>(ctrl.discrete_state(std::as_const(ctrl_state)));
+    if constexpr (controller_with_report<C>)
+      view.controller_report = std::span<const double>(ctrl.report(std::as_const(ctrl_state)));
     obj.accumulate(acc, static_cast<const step_view_with<Root, actuator_state>&>(view));
     if constexpr (user_observes)
       obs.observe(std::as_const(view));

@@ -18,8 +18,10 @@
 /// Per Pi: upper body kp [0, 4000], bp [0, 800], cp [0, 140] x 9.8, ko [0, 4000] (Table 1's k_a),
 ///   bo [0, 80] (b_a); ankle kp [0, 4000], bp [0, 400], cp [0, 10] x 9.8; toe and heel kr
 ///   [0, 8000], br [0, 100]. Not in Table 1, ours: W's upper-body weight [0, 10] and appendix B's
-///   rho [0, 1000] (end_effector_gains' defaults 1 and 300). The helper force's h_max
-///   [-200, 1000] (Sec. 8.2) is not a controller parameter and is not here.
+///   rho [0, 1000] (end_effector_gains' defaults 1 and 300).
+/// The helper force's h_max [-200, 1000] N (Sec. 8.3; the negative lower bound lets CMA sample
+///   controllers without helper force), the last parameter when planned_walk_options::helper_force
+///   is on.
 #include <cmath>
 #include <cstddef>
 #include <numbers>
@@ -78,6 +80,9 @@ inline std::vector<std::pair<double, double>> wu2010_gain_bounds() {
           {0.0, 8000.0}, {0.0, 100.0},  {0.0, 10.0},        {0.0, 1000.0}};
 }
 
+/// Sec. 8.3's bounds of the helper force's h_max, N.
+inline constexpr std::pair<double, double> wu2010_h_max_bounds{-200.0, 1000.0};
+
 /// The natural height z_ub0 of models/wu2010.hpp's upper body: its COM (the planned point) stands
 /// 1.45 m above the ankles with straight legs.
 inline constexpr double wu2010_natural_upper_body_height = 1.45;
@@ -99,6 +104,7 @@ parameter_space wu2010_search_space(const planned_walk<T, Root>& c,
   for (int h = 0; h < c.num_planner_sets(); ++h)
     bounds.insert(bounds.end(), omega.begin(), omega.end());
   for (int h = 0; h < c.num_gain_sets(); ++h) bounds.insert(bounds.end(), pi.begin(), pi.end());
+  if (c.opts().helper_force) bounds.emplace_back(wu2010_h_max_bounds);
   check_size(static_cast<std::ptrdiff_t>(bounds.size()), static_cast<std::ptrdiff_t>(names.size()),
              "wu2010_search_space: bounds");
   parameter_space space;

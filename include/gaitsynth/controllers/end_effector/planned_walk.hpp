@@ -31,6 +31,19 @@
 /// symmetric controllers, whose 46 unknowns are 25 + 2 x 10 + h_max), mirrored 37 (one Pi too:
 /// every Pi coefficient is left/right symmetric, so mirroring Pi is the identity).
 ///
+///   h_max     1 more, only with options.helper_force (Sec. 8.2's bound on the helper force, N;
+///             Sec. 8.3's bounds [-200, 1000]; <= 0: no helper force)
+///
+/// Report (controllers/concept.hpp's hook; planned_walk_report.hpp's layout), per command: the
+/// squared norms of Sec. 8.1's frame-tracking "forces" (eqs. 1-3 with options.tracking's weights),
+/// the half-cycle k, the COM target c_k of Sec. 8.1 and h_max. objectives/wu2010/ reads it.
+///
+/// Helper force (Sec. 8.2, options.helper_force): h = b - A f, the residual of eq. 5's QP in the
+/// frames' wrench space (rows of pinned frames, removed from the QP by Sec. 6.3, get none),
+/// clipped to [-{h_max}+, {h_max}+] per entry at each command and held until the next;
+/// add_external_wrenches applies it every physics step: the upper body's force at the LA frame
+/// and its torque, each action frame's force at the frame.
+///
 /// Output: joint torques (torque_actuator). Per command: a plan query and a lower-level tick, no
 /// allocation; once per half-cycle plan_half_cycle, which allocates nothing either (fixed-size
 /// plans; the state holds the current and the previous one).
@@ -52,6 +65,7 @@
 #include "gaitsynth/controllers/end_effector/half_cycle_plan.hpp"
 #include "gaitsynth/controllers/end_effector/lower_level.hpp"
 #include "gaitsynth/controllers/end_effector/planned_walk_parameters.hpp"
+#include "gaitsynth/controllers/end_effector/planned_walk_report.hpp"
 #include "gaitsynth/controllers/sensors.hpp"
 
 namespace gaitsynth {
@@ -78,6 +92,11 @@ struct planned_walk_options {
   planned_walk_symmetry symmetry = planned_walk_symmetry::mirrored_planner;
   stance_side first_stance = stance_side::left;  ///< who stands in half-cycle 0 (Omega_0's)
   lower_level_options lower{};
+  tracking_weights tracking{};  ///< Sec. 8.1's tracking report (Sec. 8.3's weights)
+  /// Sec. 8.2: append h_max to the parameters and apply the helper force (off: the paper's
+  /// controller as it runs after the optimization).
+  bool helper_force = false;
+  double h_max = 0.0;  ///< N, h_max for default_parameters() (0: no helper force)
 };
 
 template <terrain T = flat_terrain, root_joint Root = floating_root>
@@ -96,6 +115,9 @@ class planned_walk {
     std::int64_t plans_made = 0;
     std::int64_t commands = 0;
     std::int64_t qp_failures = 0;  ///< ticks whose eq. 5 QP did not return optimal (torques 0)
+    ideal_wrenches tracking;       ///< Sec. 8.1's tracking "forces" (eqs. 1-3, tracking weights)
+    Eigen::VectorXd helper;        ///< 3N + 6, eq. 4's rows: the clipped helper force (Sec. 8.2)
+    std::vector<double> report;    ///< planned_walk_report_layout
 
     const half_cycle_plan* plan() const { return current < 0 ? nullptr : &plans[current]; }
   };
@@ -106,7 +128,9 @@ class planned_walk {
       : opt_(std::move(o)),
         terrain_(std::move(ground)),
         layout_(biped_end_effector_layout(m)),
-        num_joint_dofs_(m.num_joint_dofs()) {
+        num_joint_dofs_(m.num_joint_dofs()),
+        tracking_gains_(opt_.tracking.as_gains()),
+        report_layout_(planned_walk_report_layout::for_action_frames(layout_.num_action())) {
     check_argument(std::isfinite(opt_.period) && opt_.period >= 0.0,
                    "planned_walk: period must be finite and >= 0 s, got ", opt_.period);
     validate(opt_.goal);
@@ -125,6 +149,14 @@ class planned_walk {
                    l.qp.regularization);
     check_argument(layout_.num_links() == 3, "planned_walk: the layout needs 3 links, has ",
                    layout_.num_links());
+    check_argument(std::isfinite(opt_.h_max), "planned_walk: h_max must be finite, got ",
+                   opt_.h_max);
+    report_names_.reserve(report_layout_.size);
+    report_names_.push_back("track.ub_force");
+    report_names_.push_back("track.ub_torque");
+    for (const action_frame& a : layout_.action) report_names_.push_back("track." + a.name);
+    for (const char* n : {"half_cycle", "com_target_x", "com_target_y", "h_max", "helper_max"})
+      report_names_.push_back(n);
     bind(default_parameters());
   }
 
@@ -135,8 +167,11 @@ class planned_walk {
   int num_gain_sets() const { return opt_.symmetry == planned_walk_symmetry::mirrored ? 1 : 2; }
   std::size_t num_parameters() const {
     return static_cast<std::size_t>(num_planner_sets()) * planner_vector_size +
-           static_cast<std::size_t>(num_gain_sets()) * end_effector_gains::size;
+           static_cast<std::size_t>(num_gain_sets()) * end_effector_gains::size +
+           (opt_.helper_force ? 1 : 0);
   }
+  /// Index of h_max (only with options.helper_force): the last parameter.
+  std::size_t helper_offset() const { return num_parameters() - 1; }
   /// Index of Omega_h's first entry (h < num_planner_sets()) and Pi_h's (h < num_gain_sets()).
   std::size_t planner_offset(int h) const {
     return static_cast<std::size_t>(h) * planner_vector_size;
@@ -154,6 +189,7 @@ class planned_walk {
     for (int h = 0; h < num_gain_sets(); ++h)
       for (const char* s : end_effector_gains::names)
         n.push_back("pi" + std::to_string(h) + "." + s);
+    if (opt_.helper_force) n.push_back("h_max");
     return n;
   }
   /// options.planner for every Omega (Omega_1 mirrored, which leaves the default unchanged) and
@@ -169,6 +205,7 @@ class planned_walk {
     }
     for (int h = 0; h < num_gain_sets(); ++h)
       std::copy(pi.begin(), pi.end(), p.begin() + static_cast<std::ptrdiff_t>(gains_offset(h)));
+    if (opt_.helper_force) p[helper_offset()] = opt_.h_max;
     return p;
   }
 
@@ -207,7 +244,10 @@ class planned_walk {
     if (num_gain_sets() == 1) pi[1] = pi[0];
     omega_ = omega;
     gains_ = pi;
+    h_max_ = opt_.helper_force ? p[helper_offset()] : 0.0;
   }
+  /// Sec. 8.2's bound as bound (0 without options.helper_force), N.
+  double h_max() const { return h_max_; }
   /// Omega and Pi of half-cycle parity h (0: even half-cycles, first_stance standing).
   const planner_parameters& planner(int h) const { return omega_[h]; }
   const end_effector_gains& gains(int h) const { return gains_[h]; }
@@ -224,6 +264,28 @@ class planned_walk {
     return st.half_cycle < 0 ? -1 : (st.stance == stance_side::left ? 0 : 1);
   }
 
+  // ---- report (Sec. 8.1, 8.2) ----
+  const planned_walk_report_layout& report_layout() const { return report_layout_; }
+  std::span<const double> report(const state_type& st) const { return st.report; }
+  const std::vector<std::string>& report_names() const { return report_names_; }
+
+  /// Sec. 8.2: adds the held helper force to ws.f_ext (world, about the body origins), reading the
+  /// bodies' poses from ws. Nothing without options.helper_force or with h_max <= 0.
+  void add_external_wrenches(const model<Root>& m, const state_type& st,
+                             workspace<Root>& ws) const {
+    if (!opt_.helper_force || !(h_max_ > 0.0) || st.half_cycle < 0) return;
+    const int ub = layout_.link_body[0];
+    add_point_force(m, ws, ub, point_position(m, ws, ub, layout_.reaction_point),
+                    vec3(st.helper.template head<3>()));
+    for (int j = 0; j < layout_.num_action(); ++j) {
+      const action_frame& a = layout_.action[static_cast<std::size_t>(j)];
+      const int b = layout_.link_body[static_cast<std::size_t>(a.link)];
+      add_point_force(m, ws, b, point_position(m, ws, b, a.point),
+                      vec3(st.helper.template segment<3>(action_row(j))));
+    }
+    ws.f_ext[ub].template head<3>() += st.helper.template tail<3>();
+  }
+
   // ---- state ----
   state_type make_state(const model<Root>& m) const {
     check_size(m.num_joint_dofs(), num_joint_dofs_, "planned_walk: model joint DOFs");
@@ -231,6 +293,10 @@ class planned_walk {
                   std::vector<link_target>(layout_.link_body.size()),
                   {}};
     st.stance = opt_.first_stance;
+    st.tracking.action_force.assign(layout_.action.size(), vec3::Zero());
+    st.helper.setZero(wrench_rows(layout_));
+    st.report.assign(report_layout_.size, 0.0);
+    clear_report(st);
     return st;
   }
   void reset_state(const model<Root>&, state_type& st) const {
@@ -239,6 +305,8 @@ class planned_walk {
     st.start_time = st.half_cycle_start = st.last_plan_time = 0.0;
     st.stance = opt_.first_stance;
     st.plans_made = st.commands = st.qp_failures = 0;
+    st.helper.setZero();
+    clear_report(st);
   }
 
   /// Half-cycle k's stance foot.
@@ -252,6 +320,7 @@ class planned_walk {
     ++st.commands;
     if (!s.q().allFinite() || !s.v().allFinite()) {  // a diverged state: nothing to plan from
       cmd.head(num_joint_dofs_).setZero();
+      st.helper.setZero();
       return;
     }
     if (st.half_cycle < 0) st.start_time = s.t;
@@ -265,6 +334,7 @@ class planned_walk {
                                                      s.v(), st.targets, s.contact_active, st.lower);
     if (st.lower.qp.status != qp_status::optimal) ++st.qp_failures;
     cmd.head(num_joint_dofs_) = tau;
+    update_report(st);
   }
 
  private:
@@ -294,14 +364,53 @@ class planned_walk {
     st.last_plan_time = s.t;
     st.stance = stance;
     ++st.plans_made;
+    // Sec. 8.1: c_k = c^_{k-1} + R_z(psi_m) (r x), from the COM sensed as half-cycle k starts.
+    const double psi_m = opt_.goal.movement, r = opt_.goal.step_length;
+    st.report[report_layout_.half_cycle] = static_cast<double>(k);
+    st.report[report_layout_.com_target] = s.com.x() + r * std::cos(psi_m);
+    st.report[report_layout_.com_target + 1] = s.com.y() + r * std::sin(psi_m);
+  }
+
+  void clear_report(state_type& st) const {
+    std::fill(st.report.begin(), st.report.end(), 0.0);
+    st.report[report_layout_.half_cycle] = -1.0;
+    st.report[report_layout_.h_max] = h_max_;
+  }
+
+  /// After a lower-level tick: the tracking norms (Sec. 8.1) and the helper force (Sec. 8.2).
+  void update_report(state_type& st) const {
+    const auto& lw = st.lower;
+    compute_ideal_wrenches(layout_, tracking_gains_, lw.current, lw.desired, st.tracking);
+    const planned_walk_report_layout& R = report_layout_;
+    st.report[R.tracking_begin] = st.tracking.reaction_force.squaredNorm();
+    st.report[R.tracking_begin + 1] = st.tracking.reaction_torque.squaredNorm();
+    for (std::size_t j = 0; j < st.tracking.action_force.size(); ++j)
+      st.report[R.tracking_begin + 2 + j] = st.tracking.action_force[j].squaredNorm();
+    st.report[R.h_max] = h_max_;
+    if (!opt_.helper_force || !(h_max_ > 0.0)) {
+      st.report[R.helper_max] = 0.0;
+      return;
+    }
+    // h = b - A f over eq. 4's full rows (A, b unweighted; f = 0 when the QP failed).
+    st.helper = lw.qp.b;
+    st.helper.noalias() -= lw.qp.A * lw.qp.f;
+    for (int j = 0; j < layout_.num_action(); ++j)
+      if (lw.pinned[static_cast<std::size_t>(j)])
+        st.helper.template segment<3>(action_row(j)).setZero();
+    st.helper = st.helper.cwiseMax(-h_max_).cwiseMin(h_max_);
+    st.report[R.helper_max] = st.helper.cwiseAbs().maxCoeff();
   }
 
   options opt_;
   T terrain_;
   end_effector_layout layout_;
   int num_joint_dofs_ = 0;
+  end_effector_gains tracking_gains_;
+  planned_walk_report_layout report_layout_;
+  std::vector<std::string> report_names_;
   std::array<planner_parameters, 2> omega_{};
   std::array<end_effector_gains, 2> gains_{};
+  double h_max_ = 0.0;
 };
 
 }  // namespace gaitsynth

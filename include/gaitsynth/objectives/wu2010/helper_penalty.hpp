@@ -1,0 +1,60 @@
+#pragma once
+/// \file objectives/wu2010/helper_penalty.hpp
+/// The helper force's exact nonsmooth penalty of Wu & Popovic 2010, Sec. 8.2, eq. 7:
+///     w_h L {h_max}+,   w_h = 5e-3 (Sec. 8.3), L the number of timesteps,
+/// accumulated as w_h {h_max}+ per physics step, h_max read from planned_walk's report (0 without
+/// the helper force), so over L steps it totals w_h L {h_max}+ exactly.
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <span>
+#include <string_view>
+
+#include "gaitsynth/error.hpp"
+#include "gaitsynth/objectives/concept.hpp"
+#include "gaitsynth/objectives/wu2010/common.hpp"
+
+namespace gaitsynth::wu2010 {
+
+struct helper_penalty_options {
+  double w_h = 5e-3;  ///< 1/N per step (>= 0)
+};
+
+class helper_penalty {
+ public:
+  using options = helper_penalty_options;
+  struct accumulator_type {
+    double sum = 0.0;  ///< w_h sum_j {h_max}+ so far
+  };
+
+  explicit helper_penalty(const planned_walk_report_layout& layout, options o = {})
+      : layout_(layout), opt_(o) {
+    check_argument(std::isfinite(opt_.w_h) && opt_.w_h >= 0.0,
+                   "wu2010::helper_penalty: w_h must be finite and >= 0, got ", opt_.w_h);
+  }
+  const options& opts() const { return opt_; }
+
+  template <root_joint Root>
+  accumulator_type make_accumulator(const model<Root>&) const {
+    return {};
+  }
+  template <root_joint Root>
+  void reset_accumulator(const model<Root>&, accumulator_type& a) const {
+    a = {};
+  }
+  template <class View>
+  void accumulate(accumulator_type& a, const View& v) const {
+    const auto r = checked_report(v.controller_report, layout_, "wu2010::helper_penalty");
+    a.sum += opt_.w_h * std::max(r[layout_.h_max], 0.0);
+  }
+  double finish(const accumulator_type& a, const rollout_outcome&) const { return a.sum; }
+
+  static std::array<std::string_view, 1> term_names() { return {"E_helper"}; }
+  void terms(const accumulator_type& a, std::span<double> out) const { out[0] = a.sum; }
+
+ private:
+  planned_walk_report_layout layout_;
+  options opt_;
+};
+
+}  // namespace gaitsynth::wu2010
