@@ -217,6 +217,24 @@ TEST_CASE("wang2012: min_act activates its muscles less in total than nwalk (Sec
   CHECK(act < 0.97 * normal);
 }
 
+TEST_CASE("wang2012: HAM at 1/4 strength walks 100 s at 1.25 m/s, from 9 of 10 perturbed starts",
+          "[wang2012][claim]") {
+  // Re-simulated with the weakened HAM it was optimized with (the file's info.weaken).
+  check_walker({.file = "weak_ham.controller.json",
+                .speed = 1.2744,
+                .speed_on_target = true,
+                .perturbed_walked = 9});
+}
+
+TEST_CASE(
+    "wang2012: GAS and SOL at 1/4 strength walk 100 s at 1.25 m/s, from 8 of 10 perturbed starts",
+    "[wang2012][claim]") {
+  check_walker({.file = "weak_gassol.controller.json",
+                .speed = 1.2702,
+                .speed_on_target = true,
+                .perturbed_walked = 8});
+}
+
 TEST_CASE("wang2012: min_torque keeps TA more active than nwalk (Sec. 6.2)", "[wang2012][claim]") {
 #ifdef GAITSYNTH_SANITIZED_BUILD
   return;  // the same code paths as the walks above; the Release suite checks the claim
