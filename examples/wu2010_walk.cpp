@@ -1,0 +1,460 @@
+// Wu & Popovic 2010, Sec. 8: the offline optimization of the cyclical forward-walk controller
+// (planned_walk, Sec. 7; Sec. 8.3's forward walk: t_h = 0.55 s, r = 0.65 m) on the Table 3 biped.
+// CMA-ES (Sec. 8.3): lambda = 32, parameters normalized to [0, 1] by Table 1's bounds
+// (synthesis/wu2010_search_space.hpp), initial mean 0.5 in every normalized coordinate (the middle
+// of every bound; --init FILE starts from a saved controller instead), sigma 0.3, rejection
+// sampling at the bounds, stop when the mean moves less than 1e-3 (max-norm, normalized) in one
+// iteration or after 4000 iterations. Cost per candidate: one rollout of 4 locomotion cycles
+// (8 half-cycles, 4.4 s) with the helper force on (h_max the last parameter, [-200, 1000] N),
+// under eq. 6 + eq. 7 (objectives/wu2010/wu2010_objective.hpp) plus a fall guard (below). A new
+// random height field every CMA iteration, the same for all 32 samples of it (Sec. 8.3: 1 m grid,
+// node heights U[0, 0.2] m): iteration i (counted from 0) walks on
+// random_height_field({}, seed * 1000003 + i), so --resume regenerates it; --flat optimizes on
+// flat ground instead.
+//
+//   wu2010_walk [--iterations N] [--threads N] [--seed K] [--out DIR] [--init FILE]
+//               [--horizon S] [--flat] [--fall-penalty W] [--check-seconds S]
+//   wu2010_walk --resume DIR [--threads N]
+//   wu2010_walk --replay FILE [--check-seconds S] [--out DIR]
+//
+// Fall guard (ours; the paper's cost has no fall term): a fall ends the rollout early (the
+// rollout's terrain-aware fall test, COM below half its initial height above the terrain under
+// it), which would lower every sum of eq. 6, so each physics step of the horizon left unsimulated
+// costs --fall-penalty (default 100, in eq. 6's units: its sums run over physics steps, and no
+// step of a walk costs that much: the helper penalty at h_max = 1000 N is 5 per step).
+// wang2009::failure is not used: its per-step test is the COM below a fixed height above a fixed
+// ground height, which the 0-0.2 m height fields shift.
+//
+// The check (after the optimization, or of --replay FILE / --init FILE with --iterations 0): the
+// controller WITHOUT the helper force (Sec. 8.2: the paper's controller after the optimization;
+// h_max is dropped) walks --check-seconds (20 s) on flat ground and on 10 unseen random height
+// fields (seeds 9001..9010), with the library's stall rule (rollout/walk_check.hpp).
+//
+// Writes DIR/wu2010_walk.controller.json (parameter names and values, h_max, cost, command),
+// .convergence.csv, .checkpoint (every 10 iterations), .csv (the flat check rollout), options.json
+// and summary.json, and prints a one-line JSON summary on stdout.
+#include <Eigen/Core>
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <map>
+#include <nlohmann/json.hpp>
+#include <span>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "command_line.hpp"
+#include "gaitsynth/actuators/torque.hpp"
+#include "gaitsynth/contact/height_field_terrain.hpp"
+#include "gaitsynth/contact/terrain_ref.hpp"
+#include "gaitsynth/controllers/end_effector/planned_walk.hpp"
+#include "gaitsynth/integrators/semi_implicit_euler.hpp"
+#include "gaitsynth/io/csv.hpp"
+#include "gaitsynth/models/wu2010.hpp"
+#include "gaitsynth/objectives/weighted_sum.hpp"
+#include "gaitsynth/objectives/wu2010/wu2010_objective.hpp"
+#include "gaitsynth/optimizers/checkpoint.hpp"
+#include "gaitsynth/optimizers/cmaes.hpp"
+#include "gaitsynth/optimizers/evaluators.hpp"
+#include "gaitsynth/optimizers/minimize.hpp"
+#include "gaitsynth/rollout/problem.hpp"
+#include "gaitsynth/rollout/problem_cost.hpp"
+#include "gaitsynth/rollout/rollout.hpp"
+#include "gaitsynth/rollout/walk_check.hpp"
+#include "gaitsynth/synthesis/wu2010_search_space.hpp"
+
+using namespace gaitsynth;
+namespace fs = std::filesystem;
+
+namespace {
+
+using field_ref = terrain_ref<height_field_terrain>;
+using walk_controller = planned_walk<field_ref>;
+
+struct cli {
+  long long iterations = 4000;  // Sec. 8.3
+  unsigned threads = 0;
+  unsigned long long seed = 1;
+  fs::path out;
+  bool resume = false;
+  bool flat = false;
+  std::string init, replay;
+  double horizon = 8 * 0.55;  // s: 4 locomotion cycles of 2 t_h (Sec. 8.3)
+  double fall_penalty = 100.0;
+  double check_seconds = 20.0;
+  std::string command, out_arg;
+  nlohmann::json options;
+};
+
+cli parse(int argc, char** argv) {
+  cli c;
+  for (int i = 0; i < argc; ++i) c.command += (i ? " " : "") + std::string(argv[i]);
+  CLI::App app{
+      "Wu & Popovic 2010, Sec. 8: optimize the cyclical forward-walk controller with "
+      "CMA-ES on random height fields, or replay a saved one.",
+      "wu2010_walk"};
+  app.option_defaults()->always_capture_default();
+  std::string out, resume;
+  app.add_option("--iterations", c.iterations,
+                 "CMA-ES iterations (Sec. 8.3: 4000; 0: no optimization, check the initial "
+                 "controller)")
+      ->check(example_cli::integer_in(0, 10000000));
+  example_cli::add_threads(app, c.threads);
+  example_cli::add_seed(app, c.seed);
+  app.add_option("--out", out, "run folder (default out/wu2010_walk/<UTC time>/)");
+  app.add_option("--resume", resume, "continue the run in this folder with its recorded options");
+  app.add_option("--init", c.init,
+                 "start from this saved controller (JSON) instead of the middle of every bound")
+      ->check(CLI::ExistingFile);
+  app.add_option("--replay", c.replay, "check this saved controller (JSON) instead")
+      ->check(CLI::ExistingFile);
+  app.add_option("--horizon", c.horizon, "evaluation length, s (Sec. 8.3: 4 cycles, 4.4 s)")
+      ->check(example_cli::in_range(0.01, 1000.0));
+  app.add_flag("--flat", c.flat, "optimize on flat ground instead of random height fields");
+  app.add_option("--fall-penalty", c.fall_penalty,
+                 "cost per physics step of the horizon left unsimulated by a fall (ours)")
+      ->check(example_cli::in_range(0.0, 1e12));
+  app.add_option("--check-seconds", c.check_seconds, "length of each check rollout, s")
+      ->check(example_cli::in_range(0.01, 10000.0));
+  example_cli::parse(app, argc, argv);
+  if (!resume.empty()) {
+    example_cli::reparse_recorded(app, argv[0], resume, {"threads"});
+    out = resume;
+    c.resume = true;
+  }
+  check_argument(c.replay.empty() || c.init.empty(), "--replay and --init exclude each other");
+  c.threads = example_cli::resolve_threads(c.threads);
+  c.out_arg = out;
+  c.options = example_cli::effective_options(app);
+  return c;
+}
+
+/// The fall guard (ours, see the file comment): `weight` per physics step of the requested horizon
+/// that a rollout stopped early (a fall) did not simulate; 0 for a rollout that reached it.
+class unfinished_steps {
+ public:
+  struct accumulator_type {
+    std::int64_t steps = 0;
+    double dt = 0.0;
+  };
+  template <root_joint Root>
+  accumulator_type make_accumulator(const model<Root>&) const {
+    return {};
+  }
+  template <class View>
+  void accumulate(accumulator_type& a, const View& v) const {
+    ++a.steps;
+    a.dt = v.dt;
+  }
+  double finish(const accumulator_type& a, const rollout_outcome& out) const {
+    if (out.reason == stop_reason::horizon || !(out.duration > out.time)) return 0.0;
+    if (!(a.dt > 0.0)) return out.duration > 0.0 ? 1.0 : 0.0;  // stopped before its first step
+    const auto total = static_cast<std::int64_t>(std::llround(out.duration / a.dt));
+    return static_cast<double>(std::max<std::int64_t>(total - a.steps, 0));
+  }
+};
+
+using cost_objective = weighted_sum<wu2010_objective_type, unfinished_steps>;
+
+/// Wu's training terrain (random_height_field's defaults: x in [-5, 45] m, y in [-5, 5] m), or the
+/// same grid at height 0 (flat ground).
+height_field_terrain training_field(std::uint64_t seed, bool flat) {
+  random_height_field_options o;
+  if (flat) o.min_height = o.max_height = 0.0;
+  return random_height_field(o, seed);
+}
+
+/// The neutral pose standing on `ground`.
+template <terrain T>
+sim_state start_on(const floating_model& m, const T& ground) {
+  sim_state s = make_state(m);
+  place_on_terrain(m, ground, s.q);
+  return s;
+}
+
+/// A saved controller: the parameter vector by name (the helper-force controller's, h_max last).
+struct saved_walk {
+  std::vector<std::string> names;
+  std::vector<double> values;
+  nlohmann::json info = nlohmann::json::object();  // cost, h_max, iterations, ...
+};
+
+void save_walk(const fs::path& file, const std::vector<std::string>& names,
+               const Eigen::VectorXd& x, nlohmann::ordered_json info) {
+  nlohmann::ordered_json j;
+  j["controller"] = "planned_walk";
+  j["paper"] = "Wu & Popovic 2010, Sec. 7-8 (cyclical forward walk)";
+  j["symmetry"] = "mirrored_planner";
+  j["parameter_names"] = names;
+  j["parameters"] = std::vector<double>(x.data(), x.data() + x.size());
+  for (auto& [k, v] : info.items()) j[k] = v;
+  const fs::path tmp = file.string() + ".tmp";
+  {
+    std::ofstream out(tmp);
+    out << j.dump(2) << "\n";
+    if (!out) throw std::runtime_error("cannot write " + tmp.string());
+  }
+  fs::rename(tmp, file);
+}
+
+saved_walk load_walk(const fs::path& file) {
+  std::ifstream in(file);
+  if (!in) throw std::runtime_error("cannot read " + file.string());
+  nlohmann::json j;
+  try {
+    in >> j;
+  } catch (const std::exception& e) {
+    throw std::runtime_error(file.string() + ": not JSON: " + e.what());
+  }
+  auto fail = [&](const std::string& what) {
+    throw std::invalid_argument(file.string() + ": " + what);
+  };
+  if (!j.is_object()) fail("not a saved controller (no JSON object)");
+  if (j.value("controller", std::string()) != "planned_walk")
+    fail("not a planned_walk controller (\"controller\": " +
+         (j.contains("controller") ? j["controller"].dump() : std::string("missing")) + ")");
+  if (j.value("symmetry", std::string("mirrored_planner")) != "mirrored_planner")
+    fail("symmetry " + j["symmetry"].dump() + " is not mirrored_planner, the one this runs");
+  if (!j.contains("parameter_names") || !j["parameter_names"].is_array() ||
+      !j.contains("parameters") || !j["parameters"].is_array())
+    fail("needs the arrays \"parameter_names\" and \"parameters\"");
+  saved_walk s;
+  for (const auto& n : j["parameter_names"]) {
+    if (!n.is_string()) fail("a parameter name is not a string: " + n.dump());
+    s.names.push_back(n.get<std::string>());
+  }
+  for (std::size_t i = 0; i < j["parameters"].size(); ++i) {
+    const auto& v = j["parameters"][i];
+    if (!v.is_number() || !std::isfinite(v.get<double>()))
+      fail("parameter " + std::to_string(i) +
+           (i < s.names.size() ? " (" + s.names[i] + ")" : std::string()) +
+           " is not a finite number: " + v.dump());
+    s.values.push_back(v.get<double>());
+  }
+  if (s.names.size() != s.values.size())
+    fail(std::to_string(s.names.size()) + " parameter names but " +
+         std::to_string(s.values.size()) + " values");
+  for (auto& [k, v] : j.items())
+    if (k != "parameter_names" && k != "parameters") s.info[k] = v;
+  return s;
+}
+
+/// The values of `s` in the order of `names`. A saved "h_max" not in `names` is dropped (a
+/// helper-force controller checked without it); a missing h_max that `names` wants is taken from
+/// the file's "h_max" entry. Every other missing, unknown or repeated name throws, naming it.
+std::vector<double> values_for(const saved_walk& s, const std::vector<std::string>& names,
+                               const fs::path& file) {
+  std::map<std::string, double> by_name;
+  for (std::size_t i = 0; i < s.names.size(); ++i) {
+    if (!by_name.emplace(s.names[i], s.values[i]).second)
+      throw std::invalid_argument(file.string() + ": parameter '" + s.names[i] + "' appears twice");
+    if (s.names[i] != "h_max" && std::find(names.begin(), names.end(), s.names[i]) == names.end())
+      throw std::invalid_argument(file.string() + ": unknown parameter '" + s.names[i] +
+                                  "' = " + std::to_string(s.values[i]) + " (planned_walk has " +
+                                  std::to_string(names.size()) + " parameters, " + names.front() +
+                                  " ... " + names.back() + ")");
+  }
+  std::vector<double> x;
+  for (const std::string& n : names) {
+    const auto it = by_name.find(n);
+    if (it != by_name.end()) {
+      x.push_back(it->second);
+    } else if (n == "h_max" && s.info.contains("h_max") && s.info["h_max"].is_number()) {
+      x.push_back(s.info["h_max"].get<double>());
+    } else {
+      throw std::invalid_argument(file.string() + ": parameter '" + n + "' is missing (has " +
+                                  std::to_string(s.names.size()) + " of the " +
+                                  std::to_string(names.size()) + " parameters)");
+    }
+  }
+  return x;
+}
+
+/// The rollout options of the optimization and the check (2400 Hz, penalty contact).
+rollout_options base_options() {
+  return rollout_options{};
+}
+
+int run(const cli& c) {
+  const floating_model m = wu2010_biped();
+  const std::string stem = (c.out / "wu2010_walk").string();
+  // The training terrain: one field, replaced between CMA iterations, read by the problem's
+  // contact and by every controller copy through terrain_ref.
+  const std::uint64_t field_base = c.seed * 1000003ull;
+  height_field_terrain field = training_field(field_base, c.flat);
+  const field_ref ground(field);
+
+  planned_walk_options po;  // Sec. 8.3's forward walk (r = 0.65 m, t_h = 0.55 s)
+  po.helper_force = true;
+  const walk_controller ctrl(m, ground, po);
+  const std::vector<std::string> names = ctrl.parameter_names();
+
+  // x0: the middle of every bound (Sec. 8.3: 0.5 normalized), or --init / --replay's controller.
+  const parameter_space bounds = wu2010_search_space(ctrl, ctrl.default_parameters());
+  std::vector<double> x0;
+  for (const parameter_spec& p : bounds.parameters()) x0.push_back(0.5 * (p.lower + p.upper));
+  nlohmann::json saved_info = nlohmann::json::object();
+  const std::string from = c.replay.empty() ? c.init : c.replay;
+  if (!from.empty()) {
+    const saved_walk s = load_walk(from);
+    x0 = values_for(s, names, from);
+    saved_info = s.info;
+  }
+  auto make_space = [&] {
+    try {
+      return wu2010_search_space(ctrl, x0);  // throws naming an x0 outside its bounds
+    } catch (const std::invalid_argument& e) {
+      if (from.empty()) throw;
+      throw std::invalid_argument(from + ": " + e.what());
+    }
+  };
+  const parameter_space space = make_space();
+
+  rollout_options opt = base_options();
+  opt.initial_state = start_on(m, ground);
+  const auto obj =
+      cost_objective({1.0, c.fall_penalty}, wu2010_objective(ctrl.report_layout()), {});
+  rollout_problem prob{m, torque_actuator{}, ctrl, obj, ground, semi_implicit_euler{}, opt};
+
+  Eigen::VectorXd best = Eigen::Map<const Eigen::VectorXd>(x0.data(), std::ssize(x0));
+  double best_cost = std::numeric_limits<double>::quiet_NaN();
+  std::int64_t iterations = saved_info.value("iterations", std::int64_t{0});
+  std::int64_t evaluations = saved_info.value("evaluations", std::int64_t{0});
+  if (c.replay.empty() && c.iterations > 0) {
+    cmaes_options co;
+    co.sigma0 = 0.3;  // Sec. 8.3
+    co.population_size = 32;
+    co.seed = c.seed;
+    co.stop.max_iterations = c.iterations;
+    co.tol_mean_change = 1e-3;
+    co.bounds = bound_handling::resample;
+    cmaes cma(space, co);
+    run_options ro;
+    ro.progress = &std::cerr;
+    ro.progress_interval = 10.0;
+    ro.log_file = stem + ".convergence.csv";
+    ro.checkpoint_file = stem + ".checkpoint";
+    ro.checkpoint_every = 10;
+    ro.resume = c.resume;
+    // The field of iteration i (from 0): seed * 1000003 + i, the start state placed on it.
+    auto use_field = [&](std::int64_t i) {
+      field = training_field(field_base + static_cast<std::uint64_t>(i), c.flat);
+      prob.options.initial_state = start_on(m, ground);
+    };
+    if (c.resume && fs::exists(ro.checkpoint_file)) {
+      load_checkpoint(cma, ro.checkpoint_file);  // (minimize loads it again) its iteration count
+      use_field(cma.status().iteration);
+    }
+    auto save = [&](const Eigen::VectorXd& x, double cost, const optimizer_status& st) {
+      nlohmann::ordered_json info;
+      info["h_max"] = x[static_cast<Eigen::Index>(ctrl.helper_offset())];
+      info["cost"] = cost;
+      info["iterations"] = st.iteration;
+      info["evaluations"] = st.evaluations;
+      info["seed"] = c.seed;
+      info["horizon"] = c.horizon;
+      info["flat"] = c.flat;
+      info["fall_penalty"] = c.fall_penalty;
+      info["command"] = c.command;
+      save_walk(stem + ".controller.json", names, x, info);
+    };
+    thread_pool_evaluator pool(c.threads);
+    problem_contexts ctx(prob, pool.thread_count());
+    problem_cost cost(prob, c.horizon, ctx);
+    auto per_iteration = [&](const optimizer_status& st) {
+      if (st.iteration % 10 == 0 && std::isfinite(cma.best_value()))
+        save(cma.best_x(), cma.best_value(), st);
+      use_field(st.iteration);  // Sec. 8.3: a new height field for the next iteration
+    };
+    const optimization_result res = minimize(cma, cost, pool, ro, per_iteration);
+    best = res.x;
+    best_cost = res.value;
+    iterations = res.iterations;
+    evaluations = res.evaluations;
+    save(best, best_cost, cma.status());
+    std::cerr << "wu2010_walk: " << res.iterations << " iterations, " << res.evaluations
+              << " evaluations; this call: " << res.elapsed_seconds
+              << " s; stop: " << to_string(res.stopped) << "\n";
+  } else if (saved_info.contains("cost") && saved_info["cost"].is_number()) {
+    best_cost = saved_info["cost"].get<double>();
+  }
+
+  // The check: the controller without the helper force (h_max dropped), check_seconds on flat
+  // ground (recorded) and on 10 unseen random height fields.
+  planned_walk_options check_po = po;
+  check_po.helper_force = false;
+  const walk_controller plain(m, ground, check_po);
+  const std::vector<std::string> plain_names = plain.parameter_names();
+  Eigen::VectorXd plain_x(static_cast<Eigen::Index>(plain_names.size()));
+  for (std::size_t i = 0; i < plain_names.size(); ++i) {
+    const auto at = std::find(names.begin(), names.end(), plain_names[i]) - names.begin();
+    plain_x[static_cast<Eigen::Index>(i)] = best[at];
+  }
+  const double h_max = best[static_cast<Eigen::Index>(ctrl.helper_offset())];
+  const auto check_obj = wu2010_objective(plain.report_layout());
+  rollout_options check = walk_options(base_options());
+  check.duration = c.check_seconds;
+  auto scratch = make_rollout_scratch(m);
+  const std::span<const double> px(plain_x.data(), static_cast<std::size_t>(plain_x.size()));
+  auto walk_on = [&](const height_field_terrain& terrain, trajectory* record) {
+    field = terrain;
+    check.initial_state = start_on(m, ground);
+    check.record = record;
+    check.record_every = 40;
+    return judge_walk(rollout(m, torque_actuator{}, plain, check_obj, ground, semi_implicit_euler{},
+                              px, check, scratch));
+  };
+  // For comparison, the same walk on flat ground with the helper force of the optimization.
+  field = training_field(0, true);
+  check.initial_state = start_on(m, ground);
+  check.record = nullptr;
+  const walk_check helped = judge_walk(rollout(
+      m, torque_actuator{}, ctrl, obj, ground, semi_implicit_euler{},
+      std::span<const double>(best.data(), static_cast<std::size_t>(best.size())), check, scratch));
+  trajectory tr;
+  const walk_check flat = walk_on(training_field(0, true), &tr);
+  save_csv(stem + ".csv", tr);
+  int fields_walked = 0;
+  nlohmann::ordered_json per_field = nlohmann::ordered_json::array();
+  for (std::uint64_t s = 9001; s <= 9010; ++s) {
+    const walk_check w = walk_on(random_height_field({}, s), nullptr);
+    fields_walked += w.walked ? 1 : 0;
+    per_field.push_back(
+        {{"seed", s}, {"verdict", verdict(w)}, {"time", w.seconds}, {"distance", w.distance}});
+  }
+  nlohmann::ordered_json sum;
+  sum["cost"] = best_cost;
+  sum["flat_verdict"] = verdict(flat);
+  sum["flat_time"] = flat.seconds;
+  sum["flat_distance"] = flat.distance;
+  sum["flat_speed"] = flat.average_speed;
+  sum["flat_check_cost"] = flat.cost;
+  sum["fields_walked"] = fields_walked;
+  sum["fields"] = 10;
+  sum["field_checks"] = per_field;
+  sum["check_seconds"] = c.check_seconds;
+  sum["h_max"] = h_max;
+  sum["helper_flat_verdict"] = verdict(helped);  // with the helper force, as optimized
+  sum["helper_flat_time"] = helped.seconds;
+  sum["helper_flat_distance"] = helped.distance;
+  sum["evaluations"] = evaluations;
+  sum["iterations"] = iterations;
+  example_cli::report_summary(sum, c.out);
+  return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) try {
+  cli c = parse(argc, argv);
+  c.out = example_cli::run_folder("wu2010_walk", c.out_arg);
+  if (!c.resume) example_cli::write_options(c.command, c.options, c.out);
+  return run(c);
+} catch (const std::exception& e) {
+  std::cerr << "wu2010_walk: " << e.what() << "\n";
+  return 1;
+}
