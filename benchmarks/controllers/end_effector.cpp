@@ -9,19 +9,31 @@
 //   BM_PlanHalfCycle                       the planner (Sec. 4, appendix A), once per half-cycle,
 //                                          on a seeded random height field
 //   BM_PlanQuery                           the plan's link targets at one time, once per tick
+//   BM_PlannedWalkRollout/offline:0        1.1 s (two half-cycles) of the cyclical controller
+//                                          (Sec. 7) at 2400 Hz with the lower level every step,
+//                                          physics and contact included: what a check rollout costs
+//   BM_PlannedWalkRollout/offline:1        the same as the optimization runs it (Sec. 8): the
+//                                          tracking report, eq. 6's objective, the helper force
 // GCC 12 with -march=native warns falsely inside avx512fintrin.h (see benchmarks/qp/qp.cpp).
 #if defined(__GNUC__) && !defined(__clang__)
 #pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
 #endif
 #include <benchmark/benchmark.h>
 
+#include <cmath>
 #include <random>
 
+#include <gaitsynth/actuators/torque.hpp>
 #include <gaitsynth/contact/height_field_terrain.hpp>
 #include <gaitsynth/controllers/end_effector/half_cycle_plan.hpp>
 #include <gaitsynth/controllers/end_effector/lower_level.hpp>
+#include <gaitsynth/controllers/end_effector/planned_walk.hpp>
 #include <gaitsynth/detail/uniform01.hpp>
+#include <gaitsynth/integrators/semi_implicit_euler.hpp>
 #include <gaitsynth/models/wu2010.hpp>
+#include <gaitsynth/objectives/distance.hpp>
+#include <gaitsynth/objectives/wu2010/wu2010_objective.hpp>
+#include <gaitsynth/rollout/rollout.hpp>
 
 using namespace gaitsynth;
 
@@ -127,7 +139,42 @@ void BM_PlanQuery(benchmark::State& state) {
 
 }  // namespace
 
+void BM_PlannedWalkRollout(benchmark::State& state) {
+  const bool offline = state.range(0) != 0;
+  const floating_model m = wu2010_biped();
+  planned_walk_options po;
+  po.helper_force = offline;
+  po.h_max = 200.0;  // N: the helper acts (eq. 7's bound inside Sec. 8.3's [-200, 1000])
+  const planned_walk<> c(m, flat_terrain{}, po);
+  rollout_options o;
+  o.duration = 2 * 0.55;  // the default parameters stand that long (docs/reproductions/wu2010.md)
+  o.initial_state = make_state(m);
+  place_on_terrain(m, flat_terrain{}, o.initial_state.q);
+  auto scratch = make_rollout_scratch(m);
+  const std::vector<double> p = c.default_parameters();
+  const auto run = [&](const auto& obj) {
+    for (auto _ : state) {
+      const rollout_result r = rollout(m, torque_actuator{}, c, obj, flat_terrain{},
+                                       semi_implicit_euler{}, p, o, scratch);
+      benchmark::DoNotOptimize(r.cost);
+    }
+  };
+  if (offline)
+    run(wu2010_objective(c.report_layout()));
+  else
+    run(distance_objective());
+  // items: physics steps, so items_per_second is the simulation rate in steps per second.
+  state.SetItemsProcessed(state.iterations() *
+                          static_cast<std::int64_t>(std::llround(o.duration / o.dt)));
+}
+
 BENCHMARK(BM_PlanHalfCycle);
 BENCHMARK(BM_PlanQuery);
 BENCHMARK(BM_LowerLevelTick)->ArgName("pinned")->Arg(1)->Arg(0);
 BENCHMARK(BM_PairJacobianAndQR);
+BENCHMARK(BM_PlannedWalkRollout)
+    ->ArgName("offline")
+    ->Arg(0)
+    ->Arg(1)
+    ->Unit(benchmark::kMillisecond)
+    ->MinTime(2.0);
