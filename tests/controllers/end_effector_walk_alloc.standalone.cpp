@@ -15,42 +15,12 @@
 #include "gaitsynth/objectives/distance.hpp"
 #include "gaitsynth/objectives/wu2010/wu2010_objective.hpp"
 #include "gaitsynth/rollout/rollout.hpp"
+#include "support/counting_objective.hpp"
 
 using namespace gaitsynth;
+using namespace gaitsynth::test_alloc;
 
 namespace {
-
-struct region {
-  long news_at_start = -1, news_at_end = -1, eigen_at_start = -1, eigen_at_end = -1;
-  long views = 0;
-};
-
-template <class Inner>
-struct counting_objective {
-  Inner inner;
-  region* r;
-  using accumulator_type = typename Inner::accumulator_type;
-  template <root_joint Root>
-  accumulator_type make_accumulator(const model<Root>& m) const {
-    return inner.make_accumulator(m);
-  }
-  template <class View>
-  void accumulate(accumulator_type& a, const View& v) const {
-    if (v.step == 0) {
-      r->news_at_start = g_news.load();
-      r->eigen_at_start = g_eigen_asserts.load();
-      Eigen::internal::set_is_malloc_allowed(false);
-    }
-    inner.accumulate(a, v);
-    ++r->views;
-    r->news_at_end = g_news.load();
-    r->eigen_at_end = g_eigen_asserts.load();
-  }
-  double finish(const accumulator_type& a, const rollout_outcome& out) const {
-    Eigen::internal::set_is_malloc_allowed(true);
-    return inner.finish(a, out);
-  }
-};
 
 /// Counts the plans the controller made (read through the observer's view of its state).
 struct plan_counter {

@@ -34,47 +34,16 @@
 #include "gaitsynth/rollout/problem.hpp"
 #include "gaitsynth/rollout/rollout.hpp"
 #include "gaitsynth/synthesis/nearest_neighbor_synthesis.hpp"
+#include "support/counting_objective.hpp"
 #include "support/rollout_e2.hpp"
 
 using namespace gaitsynth;
+using namespace gaitsynth::test_alloc;
 using namespace gaitsynth::test_e2;
 
 namespace {
 
 constexpr double dt = 1.0 / 2400.0;
-
-/// Counts allocations between its first and last accumulate (and forbids Eigen's in between).
-struct region {
-  long news_at_start = -1, news_at_end = -1, eigen_at_start = -1, eigen_at_end = -1;
-  long views = 0;
-};
-
-template <class Inner>
-struct counting_objective {
-  Inner inner;
-  region* r;
-  using accumulator_type = typename Inner::accumulator_type;
-  template <root_joint Root>
-  accumulator_type make_accumulator(const model<Root>& m) const {
-    return inner.make_accumulator(m);
-  }
-  template <class View>
-  void accumulate(accumulator_type& a, const View& v) const {
-    if (v.step == 0) {
-      r->news_at_start = g_news.load();
-      r->eigen_at_start = g_eigen_asserts.load();
-      Eigen::internal::set_is_malloc_allowed(false);
-    }
-    inner.accumulate(a, v);
-    ++r->views;
-    r->news_at_end = g_news.load();
-    r->eigen_at_end = g_eigen_asserts.load();
-  }
-  double finish(const accumulator_type& a, const rollout_outcome& out) const {
-    Eigen::internal::set_is_malloc_allowed(true);
-    return inner.finish(a, out);
-  }
-};
 
 /// A controller that reads delayed sensors at 64 Hz (exercises the delay line and the period).
 struct delayed_reader {
