@@ -326,6 +326,50 @@ TEST_CASE("a diverging simulation is a failed rollout with cost +infinity, not a
   }
 }
 
+TEST_CASE("a blow-up is reported as a divergence, not as a fall far away",
+          "[rollout][divergence]") {
+  auto m = wang2009_humanoid();
+  for (auto& d : m.dofs) d.torque_limit = 1e12;
+  auto scr = make_rollout_scratch(m);
+  auto opt = standing_options(m, 1.0);  // fall detection on
+  opt.dt = 0.01;
+  const Eigen::VectorXd kp = Eigen::VectorXd::Constant(m.num_joint_dofs(), 1e7);
+  Eigen::VectorXd target = standing_pose(m);
+  target.setConstant(0.5);
+  auto run = [&] {
+    return rollout(m, pd_actuator(kp, 0.1 * kp), pose_hold(m), distance_objective(), flat_terrain(),
+                   semi_implicit_euler(), target, opt, scr);
+  };
+  // The exploding state is huge but finite for a step: the fall test used to see it first and
+  // report a "fall" with the COM 1e10 m away.
+  const rollout_result r = run();
+  CHECK(r.reason == stop_reason::non_finite);
+  CHECK(r.cost == std::numeric_limits<double>::infinity());
+  CHECK((r.com_final - r.com_initial).norm() < 2.0);  // the last sane COM
+  SECTION("the threshold: a start at 150 m/s is a divergence at 100 m/s, not at infinity") {
+    opt.dt = 1.0 / 2400.0;
+    opt.duration = 0.01;
+    opt.initial_state.v[2] = 150.0;  // launched upward (MuJoCo's free joint: linear velocity first)
+    const Eigen::VectorXd held = standing_pose(m);
+    auto fly = [&] {
+      const Eigen::VectorXd off = Eigen::VectorXd::Zero(m.num_joint_dofs());  // a passive body
+      return rollout(m, pd_actuator(off, off), pose_hold(m), distance_objective(), flat_terrain(),
+                     semi_implicit_euler(), held, opt, scr);
+    };
+    const rollout_result fast = fly();
+    CHECK(fast.reason == stop_reason::non_finite);
+    CHECK(fast.steps == 0);
+    opt.divergence_com_speed = std::numeric_limits<double>::infinity();
+    CHECK(fly().reason == stop_reason::horizon);
+  }
+  SECTION("a threshold that is not > 0 is refused, naming it") {
+    for (double bad : {0.0, -1.0, std::numeric_limits<double>::quiet_NaN()}) {
+      opt.divergence_com_speed = bad;
+      CHECK_THROWS_WITH(run(), Catch::Contains("divergence_com_speed"));
+    }
+  }
+}
+
 TEST_CASE("the controller runs at its own period", "[rollout][controller][period]") {
   const auto m = wang2009_humanoid();
   auto scr = make_rollout_scratch(m);

@@ -200,6 +200,9 @@ rollout_result rollout_impl(const model<Root>& m, const Actuator& act, C& ctrl,
                  "rollout_options: fall_height and fall_fraction must be finite (fraction >= 0), "
                  "got ",
                  opt.fall_height, " and ", opt.fall_fraction);
+  check_argument(opt.divergence_com_speed > 0.0,
+                 "rollout_options::divergence_com_speed must be > 0 m/s, got ",
+                 opt.divergence_com_speed);
   check_argument(std::isfinite(opt.stall.window) && opt.stall.window >= 0.0,
                  "rollout_options::stall.window must be finite and >= 0 s, got ", opt.stall.window);
   check_argument(std::isfinite(opt.stall.min_progress),
@@ -466,6 +469,7 @@ rollout_result rollout_impl(const model<Root>& m, const Actuator& act, C& ctrl,
       opt.stall.window > 0.0 ? std::max<std::int64_t>(1, std::llround(opt.stall.window / dt)) : 0;
   std::int64_t next_stall_check = stall_steps > 0 ? stall_steps : -1;
   double stall_x = res.com_initial.x();
+  const double divergence_speed_squared = opt.divergence_com_speed * opt.divergence_com_speed;
   for (;; ++k) {
     const double t = t0 + static_cast<double>(k) * dt;
     s.t = t;
@@ -474,8 +478,12 @@ rollout_result rollout_impl(const model<Root>& m, const Actuator& act, C& ctrl,
     kinematics_current = integrator_evaluating_state_first<std::remove_cvref_t<Integrator>>;
     com = center_of_mass(m, ws);
     com_v = com_velocity(m, ws);
+    // 2. stop conditions on the current state; a diverging state keeps the last sane COM
+    if (!(com_v.squaredNorm() <= divergence_speed_squared)) {
+      reason = stop_reason::non_finite;
+      break;
+    }
     res.com_final = com;
-    // 2. stop conditions on the current state
     if (opt.detect_falls &&
         has_fallen(com.z() - ground.height(com.x(), com.y()), res.fall_height)) {
       reason = stop_reason::fell;

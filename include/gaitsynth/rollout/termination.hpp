@@ -13,7 +13,7 @@ namespace gaitsynth {
 enum class stop_reason : std::uint8_t {
   horizon,  ///< simulated the whole requested duration
   fell,     ///< the COM dropped below the fall height above the terrain (paper convention: a fall)
-  non_finite,  ///< q or v stopped being finite (divergence: huge gains, too large a timestep, ...)
+  non_finite,  ///< diverged: q or v not finite, or the COM faster than divergence_com_speed
   objective,   ///< the objective asked to stop early (its done() returned true)
   stalled      ///< the COM advanced less than a stall window's distance (rollout_options::stall)
 };
