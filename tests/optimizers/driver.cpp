@@ -73,6 +73,20 @@ TEST_CASE("minimize prints a compact progress line", "[optimizers]") {
                       Contains("left ~") && Contains("stop: max_iterations"));
 }
 
+TEST_CASE("the progress line's time left extrapolates this call's pace, also after a resume",
+          "[optimizers]") {
+  optimizer_status s;
+  s.iteration = 300;
+  s.budget_fraction = 0.75;
+  // A fresh run: 0.75 of the budget in 30 s, 10 s left.
+  CHECK_THAT(progress_line("cmaes", s, 30.0), Contains("left ~10.0s"));
+  // Resumed at 0.5: this call did 0.25 in 10 s, so 10 s left (not 3.3 s: the pace of the whole
+  // budget fraction over this call's time).
+  CHECK_THAT(progress_line("cmaes", s, 10.0, 0.5), Contains("left ~10.0s"));
+  // Nothing done yet in this call: unknown.
+  CHECK_THAT(progress_line("cmaes", s, 1.0, 0.75), Contains("left ~?"));
+}
+
 TEST_CASE("continuation starts each stage from the previous result", "[optimizers]") {
   // Stage k: minimum at c_k = 1, 2, 3 (like a horizon or slope that grows by stages).
   const std::vector<double> centers = {1.3, 2.1, 3.7};

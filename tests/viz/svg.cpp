@@ -268,3 +268,12 @@ TEST_CASE("nice_ticks ends on ranges below the values' resolution (found by fuzz
   CHECK(u.front() == 0.0);
   CHECK(u.back() == 10.0);
 }
+
+TEST_CASE("tick_decimals of equal ticks (found by fuzzing)", "[viz][svg][bad_input]") {
+  // Ticks below the values' resolution come out equal: -log10(0) = inf, whose conversion to int
+  // was undefined (UBSan: "inf is outside the range of representable values of type 'int'").
+  CHECK(gaitsynth::viz_detail::tick_decimals({1e33, 1e33}) == 6);
+  CHECK(gaitsynth::viz_detail::tick_decimals({0.0, 0.5}) == 1);
+  CHECK(gaitsynth::viz_detail::tick_decimals({0.0, 1e-9}) == 6);
+  CHECK(gaitsynth::viz_detail::tick_decimals({0.0, 100.0}) == 0);
+}

@@ -101,11 +101,14 @@ inline constexpr const char* csv_header =
 /// The compact progress line, e.g.
 /// `cmaes  it 120  ev 1200  best 1.234e-05  med 2.10e-05  step 3.2e-03  axis 12.3  1.2s  left
 /// ~3.4s`
-inline std::string progress_line(std::string_view name, const optimizer_status& s, double elapsed) {
+/// `elapsed` is this call's wall time and `fraction_at_start` the budget fraction it started
+/// from (a resumed run's), so "left" extrapolates this call's own pace.
+inline std::string progress_line(std::string_view name, const optimizer_status& s, double elapsed,
+                                 double fraction_at_start = 0.0) {
   char buf[256];
   double left = std::numeric_limits<double>::quiet_NaN();
-  if (std::isfinite(s.budget_fraction) && s.budget_fraction > 0)
-    left = elapsed * (1.0 - s.budget_fraction) / s.budget_fraction;
+  const double done = s.budget_fraction - fraction_at_start;
+  if (std::isfinite(done) && done > 0) left = elapsed * (1.0 - s.budget_fraction) / done;
   std::snprintf(buf, sizeof buf,
                 "%.*s%s it %lld  ev %lld  best %.4e  med %.3e  step %.2e  axis %.3g  %s  left ~%s",
                 static_cast<int>(name.size()), name.data(),
@@ -181,6 +184,8 @@ optimization_result minimize(O&& opt, F&& objective, E&& eval, const run_options
 
   std::vector<double> values;
   double last_print = -1e300;
+  const double fraction_at_start =
+      std::isfinite(opt.status().budget_fraction) ? opt.status().budget_fraction : 0.0;
   bool by_callback = false;
   optimizer_status status = opt.status();
   while (opt.stopped() == stop_criterion::none) {
@@ -207,7 +212,7 @@ optimization_result minimize(O&& opt, F&& objective, E&& eval, const run_options
     if (by_callback) status.stopped = stop_criterion::callback;
     if (ro.progress && (t - last_print >= ro.progress_interval || status.iteration == 1 ||
                         status.stopped != stop_criterion::none || by_callback)) {
-      *ro.progress << progress_line(opt.name(), status, t) << '\n';
+      *ro.progress << progress_line(opt.name(), status, t, fraction_at_start) << '\n';
       last_print = t;
     }
     if (by_callback) break;

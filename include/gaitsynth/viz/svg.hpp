@@ -124,7 +124,11 @@ inline std::vector<double> nice_ticks(double lo, double hi, int target = 5) {
 inline int tick_decimals(const std::vector<double>& ticks) {
   if (ticks.size() < 2) return 2;
   const double step = std::abs(ticks[1] - ticks[0]);
-  return std::clamp(static_cast<int>(std::ceil(-std::log10(step) - 1e-9)), 0, 6);
+  // Ticks below the values' resolution can be equal (step 0, -log10 = inf): clamped as a double
+  // first, since converting inf to int is undefined (found by fuzz/convergence_csv).
+  const double d = std::ceil(-std::log10(step) - 1e-9);
+  if (std::isnan(d)) return 2;
+  return static_cast<int>(std::clamp(d, 0.0, 6.0));
 }
 
 /// Range [lo, hi] of the finite values in v (lo > hi when there are none).
