@@ -118,6 +118,12 @@ TEST_CASE("entry points: rollout() options", "[rollout][bad_input][entry_points]
   // Start state and its velocity offset: sizes and values.
   CHECK_THROWS_WITH(s.run(with([](auto& o) { o.initial_state.q = Eigen::VectorXd::Zero(5); })),
                     Contains("initial_state.q") && Contains(got(nq, 5)));
+  // A velocity or time without q would be dropped (the neutral pose starts at rest at t = 0).
+  CHECK_THROWS_WITH(
+      s.run(with([&](auto& o) { o.initial_state.v = Eigen::VectorXd::Ones(nv); })),
+      Contains("initial_state") && Contains("without q") && Contains("size " + std::to_string(nv)));
+  CHECK_THROWS_WITH(s.run(with([&](auto& o) { o.initial_state.t = 2.5; })),
+                    Contains("initial_state") && Contains("without q") && Contains("2.5"));
   CHECK_THROWS_WITH(s.run(with([&](auto& o) {
     o.initial_state = make_state(s.m);
     o.initial_state.v.resize(2);

@@ -226,6 +226,12 @@ rollout_result rollout_impl(const model<Root>& m, const Actuator& act, C& ctrl,
   workspace<Root>& ws = scr.ws;
   sim_state& s = scr.state;
   if (opt.initial_state.q.size() == 0) {
+    // An empty q means "the neutral pose at rest at t = 0": a v or t given with it would be
+    // silently dropped.
+    check_argument(opt.initial_state.v.size() == 0 && opt.initial_state.t == 0.0,
+                   "rollout_options::initial_state: v (size ", opt.initial_state.v.size(),
+                   ") and t (", opt.initial_state.t,
+                   ") given without q; give q too, or none of them for the neutral pose at rest");
     s.q = neutral_configuration(m);
     if constexpr (Root::nq > 0) place_on_terrain(m, ground, s.q);
     s.v.setZero();
