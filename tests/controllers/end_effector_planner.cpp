@@ -577,4 +577,8 @@ TEST_CASE("planner: bad input throws naming the value", "[end_effector][planner]
   bad_in.swing_foot.position.z() = kNaN;
   CHECK_THROWS_WITH(plan_half_cycle(forward_goal(), p, setup, bad_in, ground),
                     Contains("swing_foot.position[2]") && Contains("nan"));
+  bad_in = in;
+  bad_in.stance = stance_side::none;  // the keyframes' "not given", shared type
+  CHECK_THROWS_WITH(plan_half_cycle(forward_goal(), p, setup, bad_in, ground),
+                    Contains("stance") && Contains("none"));
 }

@@ -236,6 +236,10 @@ TEST_CASE("planned_walk: bind refuses a wrong size, NaN and bad values, naming t
   nan_goal.goal.step_length = nan;
   CHECK_THAT(message_of([&] { planned_walk<> d(m, flat_terrain{}, nan_goal); }),
              Catch::Contains("step_length"));
+  planned_walk_options nobody;
+  nobody.first_stance = stance_side::none;
+  CHECK_THAT(message_of([&] { planned_walk<> d(m, flat_terrain{}, nobody); }),
+             Catch::Contains("first_stance") && Catch::Contains("none"));
 }
 
 TEST_CASE("planned_walk: plans at t = 0, t_h, 2 t_h, ... and swaps stance and swing",

@@ -31,6 +31,7 @@
 #include "gaitsynth/error.hpp"
 #include "gaitsynth/model/model.hpp"
 #include "gaitsynth/model/state.hpp"
+#include "gaitsynth/motion/stance_side.hpp"
 
 namespace gaitsynth {
 
@@ -40,13 +41,8 @@ struct keyframe {
   Eigen::VectorXd q;  ///< model.nq(): root coordinates, then joint angles (rad)
 };
 
-/// Which leg supports the body during the listed segment (the mirrored segment uses the other).
-enum class stance_side { none, left, right };
-
-inline stance_side opposite(stance_side s) {
-  return s == stance_side::left ? stance_side::right
-                                : (s == stance_side::right ? stance_side::left : stance_side::none);
-}
+// stance_side (motion/stance_side.hpp): which leg supports the body during the listed segment (the
+// mirrored segment uses the other).
 
 /// Mirrors a configuration across the sagittal (x-z) plane: left and right joint DOFs swap (with
 /// the model's mirror signs); a planar root is unchanged, a floating root maps (x, y, z) to

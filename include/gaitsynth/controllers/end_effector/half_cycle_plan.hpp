@@ -121,7 +121,7 @@ inline void check_pose(const end_effector_pose& p, const char* what) {
 /// Plans one half-cycle (appendix A). `previous` (may be null) is the plan of the half-cycle
 /// that just ended: its swing becomes this plan's stance-foot tail, its psi_f is psi_f'.
 /// \throws std::invalid_argument naming the value for a non-finite goal, parameter, setup value or
-/// pose, t_h <= 0, t_e < 0, or gamma / control-point u outside [0, 1].
+/// pose, t_h <= 0, t_e < 0, gamma / control-point u outside [0, 1], or stance_side::none.
 template <terrain T>
 half_cycle_plan plan_half_cycle(const task_goal& goal, const planner_parameters& omega,
                                 const planner_setup& setup, const planner_input& in,
@@ -129,6 +129,8 @@ half_cycle_plan plan_half_cycle(const task_goal& goal, const planner_parameters&
   validate(goal);
   validate(omega);
   validate(setup);
+  check_argument(in.stance != stance_side::none,
+                 "plan_half_cycle: the stance foot must be left or right, got none");
   detail::check_pose(in.upper_body, "upper_body");
   detail::check_pose(in.stance_foot, "stance_foot");
   detail::check_pose(in.swing_foot, "swing_foot");

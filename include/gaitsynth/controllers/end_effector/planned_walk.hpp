@@ -135,6 +135,8 @@ class planned_walk {
                    "planned_walk: period must be finite and >= 0 s, got ", opt_.period);
     validate(opt_.goal);
     validate(opt_.setup);
+    check_argument(opt_.first_stance != stance_side::none,
+                   "planned_walk: first_stance must be left or right, got none");
     check_argument(opt_.period < opt_.setup.t_h, "planned_walk: period (", opt_.period,
                    " s) must be shorter than the half-cycle t_h (", opt_.setup.t_h, " s)");
     const lower_level_options& l = opt_.lower;

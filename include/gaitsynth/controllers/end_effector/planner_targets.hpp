@@ -29,12 +29,10 @@
 #include <numbers>
 
 #include "gaitsynth/controllers/end_effector/planner_parameters.hpp"
+#include "gaitsynth/motion/stance_side.hpp"
 #include "gaitsynth/spatial/types.hpp"
 
 namespace gaitsynth {
-
-/// Which foot stands during the half-cycle.
-enum class stance_side { left, right };
 
 inline mat3 rotation_z(double a) {
   return Eigen::AngleAxisd(a, vec3::UnitZ()).toRotationMatrix();
