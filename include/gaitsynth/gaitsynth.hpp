@@ -1,7 +1,11 @@
 #pragma once
 /// \file gaitsynth.hpp
-/// Everything in gaitsynth. Convenient for examples and quick experiments; a program that cares
-/// about compile time includes only the headers it uses (each header includes what it needs).
+/// The core of gaitsynth: model, dynamics, contact, actuators, controllers, objectives, rollout,
+/// optimizers, QP, models, I/O and visualization, with the Sharon 2005 synthesis and the Wang 2009
+/// controller and objective. Each later paper's system has its own umbrella header (wang2009.hpp,
+/// wu2010.hpp, wang2012.hpp; analysis.hpp for gait measures), so a program pays only for the
+/// systems it uses; one that cares about compile time includes only the headers it uses (each
+/// header includes what it needs).
 /// The headers that use nlohmann::json (motion/keyframes_json.hpp,
 /// controllers/nearest_neighbor_json.hpp, viz/html_player.hpp, which writes the player's data,
 /// and io/viewer_outputs.hpp, which writes the player) are included only when
