@@ -1,8 +1,8 @@
 #pragma once
 /// \file analysis.hpp
-/// Umbrella header of the gait measures (used by docs/reproductions/wang2009.md and wang2012.md): gait cycles and their windows, sagittal
-/// features, ankle push-off against the human data, arm swing, torso lean, standard scores
-/// against normative data, muscle recordings.
+/// Umbrella header of the gait measures (used by docs/reproductions/wang2009.md and wang2012.md):
+/// gait cycles and their windows, sagittal features, ankle push-off against the human data, arm
+/// swing, torso lean, standard scores against normative data, muscle recordings.
 #include "gaitsynth/analysis/ankle_push_off.hpp"
 #include "gaitsynth/analysis/arm_swing.hpp"
 #include "gaitsynth/analysis/cycle_window.hpp"
