@@ -412,6 +412,11 @@ int run(const cli& c) {
     std::cerr << "wu2010_walk: " << res.iterations << " iterations, " << res.evaluations
               << " evaluations; this call: " << res.elapsed_seconds
               << " s; stop: " << to_string(res.stopped) << "\n";
+  } else if (c.replay.empty()) {
+    // --iterations 0: the initial controller's cost on iteration 0's field, as the run would
+    // score it first (not a saved value from another field).
+    problem_contexts ctx(prob, 1);
+    best_cost = problem_cost(prob, c.horizon, ctx)(best, 0);
   } else if (saved_info.contains("cost") && saved_info["cost"].is_number()) {
     best_cost = saved_info["cost"].get<double>();
   }
