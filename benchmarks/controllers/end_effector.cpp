@@ -88,7 +88,7 @@ void BM_PairJacobianAndQR(benchmark::State& state) {
   forward_kinematics(fx.m, fx.ws.dyn, fx.q, fx.v);
   read_frame_states(fx.m, fx.ws.dyn, fx.L, fx.ws.current);
   for (auto _ : state) {
-    pair_jacobian(fx.m, fx.ws.dyn, fx.q, fx.L, fx.ws.current, fx.ws.Jpt, fx.ws.Jub, fx.ws.J);
+    pair_jacobian(fx.m, fx.ws.dyn, fx.q, fx.L, fx.ws.J);
     factor_pair_jacobian(fx.ws.J, opt, fx.ws.qp);
     benchmark::DoNotOptimize(fx.ws.qp.U.data());
   }

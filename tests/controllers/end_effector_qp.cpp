@@ -32,7 +32,7 @@ struct fixture {
     const Eigen::VectorXd v = gaitsynth::testing::random_vector(rng, m.nv(), 0.5);
     forward_kinematics(m, ws.dyn, q, v);
     read_frame_states(m, ws.dyn, L, ws.current);
-    pair_jacobian(m, ws.dyn, q, L, ws.current, ws.Jpt, ws.Jub, ws.J);
+    pair_jacobian(m, ws.dyn, q, L, ws.J);
     factor_pair_jacobian(ws.J, opt, ws.qp);
     ws.ideal.reaction_force = gaitsynth::testing::random_vec3(rng, wrench_scale);
     ws.ideal.reaction_torque = gaitsynth::testing::random_vec3(rng, wrench_scale);

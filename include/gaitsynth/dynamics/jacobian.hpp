@@ -37,6 +37,37 @@ void point_jacobian(const model<Root>& m, workspace<Root>& ws,
   }
 }
 
+/// J (3 x nj, the joint columns): the world velocity of the point p_body of `body` relative to the
+/// point of `reference` that coincides with it, J_body(p) - J_reference(p) without the root's
+/// columns (they cancel). One walk up each chain instead of two full point Jacobians; the columns
+/// of the joints both bodies hang from come out exactly zero (the same column added and
+/// subtracted). Wu & Popovic 2010's J (controllers/end_effector/generalized_forces.hpp).
+template <root_joint Root>
+void relative_point_jacobian(const model<Root>& m, workspace<Root>& ws,
+                             const Eigen::Ref<const Eigen::VectorXd>& q, int body,
+                             const vec3& p_body, int reference, Eigen::Ref<Eigen::MatrixXd> J) {
+  detail::check_workspace(m, ws);
+  detail::check_q(m, q);
+  check_argument(body >= 0 && body < m.num_bodies() && reference >= 0 && reference < m.num_bodies(),
+                 "relative_point_jacobian: body ", body, " or reference ", reference,
+                 " out of range [0, ", m.num_bodies(), ")");
+  check_argument(J.rows() == 3 && J.cols() == m.num_joint_dofs(),
+                 "relative_point_jacobian: J must be 3 x ", m.num_joint_dofs(), ", got ", J.rows(),
+                 " x ", J.cols());
+  detail::ensure_poses(m, ws, q);
+  const auto& s = ws.scratch;
+  const vec3 r = s.body_rel[body] + ws.body_rotation[body] * p_body;
+  J.setZero();
+  for (int n = s.body_node[body]; n > 0; n = s.node_parent[n]) {
+    const detail::svec& S = s.S[n];
+    J.col(n - 1) += detail::lin(S) + detail::ang(S).cross(r);
+  }
+  for (int n = s.body_node[reference]; n > 0; n = s.node_parent[n]) {
+    const detail::svec& S = s.S[n];
+    J.col(n - 1) -= detail::lin(S) + detail::ang(S).cross(r);
+  }
+}
+
 /// J (3 x nv): world angular velocity of `body` is J v.
 template <root_joint Root>
 void body_orientation_jacobian(const model<Root>& m, workspace<Root>& ws,

@@ -22,12 +22,12 @@
 
 namespace gaitsynth {
 
-/// J (3K x nj) at configuration q, the frame positions in `s` (read_frame_states at the same q).
-/// Jpt and Jub are 3 x nv scratch. Poses in `ws` are reused when current for q.
+/// J (3K x nj) at configuration q: row block k is relative_point_jacobian of action frame k's
+/// point on its link with respect to the upper body (dynamics/jacobian.hpp). Poses in `ws` are
+/// reused when current for q.
 template <root_joint Root>
 void pair_jacobian(const model<Root>& m, workspace<Root>& ws,
                    const Eigen::Ref<const Eigen::VectorXd>& q, const end_effector_layout& L,
-                   const frame_states& s, Eigen::MatrixXd& Jpt, Eigen::MatrixXd& Jub,
                    Eigen::Ref<Eigen::MatrixXd> J) {
   const int nj = m.num_joint_dofs(), K = L.num_pairs();
   check_argument(J.rows() == 3 * K && J.cols() == nj, "pair_jacobian: J must be ", 3 * K, " x ", nj,
@@ -36,10 +36,7 @@ void pair_jacobian(const model<Root>& m, workspace<Root>& ws,
   forward_kinematics(m, ws, q);
   for (int k = 0; k < K; ++k) {
     const action_frame& a = L.action[k];
-    const vec3 p_in_ub = ws.body_rotation[ub].transpose() * (s.position[k] - ws.body_position[ub]);
-    point_jacobian(m, ws, q, L.link_body[a.link], a.point, Jpt);
-    point_jacobian(m, ws, q, ub, p_in_ub, Jub);
-    J.middleRows(3 * k, 3) = Jpt.rightCols(nj) - Jub.rightCols(nj);
+    relative_point_jacobian(m, ws, q, L.link_body[a.link], a.point, ub, J.middleRows(3 * k, 3));
   }
 }
 

@@ -44,7 +44,6 @@ struct lower_level_workspace {
   workspace<Root> dyn;                ///< own kinematics (the rollout's workspace is read-only)
   frame_states current, desired;      ///< hatted and desired frame states
   ideal_wrenches ideal;               ///< eqs. 1-3
-  Eigen::MatrixXd Jpt, Jub;           ///< 3 x nv point Jacobians
   Eigen::MatrixXd J;                  ///< 3K x nj, Sec. 6.1
   std::vector<unsigned char> pinned;  ///< per action frame (Sec. 6.3)
   Eigen::VectorXd tau_max;            ///< nj, the model's torque limits (Table 3)
@@ -66,8 +65,6 @@ lower_level_workspace<Root> make_lower_level_workspace(const model<Root>& m,
   ws.current = make_frame_states(L);
   ws.desired = make_frame_states(L);
   ws.ideal.action_force.assign(L.action.size(), vec3::Zero());
-  ws.Jpt.setZero(3, m.nv());
-  ws.Jub.setZero(3, m.nv());
   ws.J.setZero(3 * L.num_pairs(), nj);
   ws.pinned.assign(L.action.size(), 0);
   ws.tau_max.resize(nj);
@@ -127,7 +124,7 @@ const Eigen::VectorXd& lower_level_torques(
   desired_frame_states(m, L, targets, ws.desired);
   compute_ideal_wrenches(L, g, ws.current, ws.desired, ws.ideal);
   pinned_frames(L, ws.current, ws.desired, touching, opt, ws.pinned);
-  pair_jacobian(m, ws.dyn, q, L, ws.current, ws.Jpt, ws.Jub, ws.J);
+  pair_jacobian(m, ws.dyn, q, L, ws.J);
   factor_pair_jacobian(ws.J, opt.qp, ws.qp);
   assemble_eq4(L, ws.current, ws.ideal, ws.qp.A, ws.qp.b);
   // W: the upper body's force and torque rows share one weight, the feet's are 1 (Sec. 6.2).
