@@ -87,6 +87,45 @@ TEST_CASE("the progress line's time left extrapolates this call's pace, also aft
   CHECK_THAT(progress_line("cmaes", s, 1.0, 0.75), Contains("left ~?"));
 }
 
+TEST_CASE("a resumed run's log drops the row a kill tore", "[optimizers]") {
+  const auto dir = std::filesystem::temp_directory_path() / "gaitsynth_torn_log";
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  run_options ro;
+  ro.log_file = dir / "log.csv";
+  ro.checkpoint_file = dir / "run.ckpt";
+  ro.checkpoint_every = 5;
+  ro.resume = true;
+  cmaes_options o;
+  o.stop.max_iterations = 20;
+  const auto space = parameter_space::unbounded(Eigen::VectorXd::Ones(4));
+  {
+    cmaes first(space, o);
+    minimize(first, tf::sphere, ro, [](const optimizer_status& s) { return s.iteration < 10; });
+  }
+  // The process dies in the middle of writing a row (no newline).
+  {
+    std::ofstream torn(ro.log_file, std::ios::app);
+    torn << "0,0,11,110,0.0012";
+  }
+  cmaes second(space, o);
+  REQUIRE(minimize(second, tf::sphere, ro).resumed);
+  const auto rows = read_csv(ro.log_file);
+  REQUIRE(rows.size() == 21);  // the header and iterations 1-20 (the checkpoint is at 10)
+  for (const auto& r : rows) CHECK(r.size() == rows.front().size());
+  CHECK(rows[11][2] == "11");
+  CHECK(rows[20][2] == "20");
+  // A torn header alone is cut away and written again.
+  {
+    std::ofstream torn(ro.log_file, std::ios::trunc);
+    torn << "stage,restart,iter";
+  }
+  cmaes third(space, o);
+  minimize(third, tf::sphere, ro);
+  CHECK(read_csv(ro.log_file).front().size() == rows.front().size());
+  std::filesystem::remove_all(dir);
+}
+
 TEST_CASE("continuation starts each stage from the previous result", "[optimizers]") {
   // Stage k: minimum at c_k = 1, 2, 3 (like a horizon or slope that grows by stages).
   const std::vector<double> centers = {1.3, 2.1, 3.7};

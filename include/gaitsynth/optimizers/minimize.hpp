@@ -12,6 +12,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <ostream>
 #include <span>
 #include <string>
@@ -76,6 +77,16 @@ inline std::string csv_escape(const std::string& s) {
     out += c;
   }
   return out + '"';
+}
+
+/// A process killed while writing a row leaves a line without its newline; a resumed run would
+/// append its first row to it. Cut the file back to its last complete line.
+inline void drop_torn_last_line(const std::filesystem::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  if (text.empty() || text.back() == '\n') return;
+  const std::size_t keep = text.rfind('\n');
+  std::filesystem::resize_file(file, keep == std::string::npos ? 0 : keep + 1);
 }
 
 inline std::string format_seconds(double s) {
@@ -151,8 +162,10 @@ optimization_result minimize(O&& opt, F&& objective, E&& eval, const run_options
   const auto& space = opt.space();
   std::ofstream log;
   if (!ro.log_file.empty()) {
-    const bool append = (result.resumed || ro.append_log) && std::filesystem::exists(ro.log_file) &&
-                        std::filesystem::file_size(ro.log_file) > 0;
+    const bool continues =
+        (result.resumed || ro.append_log) && std::filesystem::exists(ro.log_file);
+    if (continues) detail::drop_torn_last_line(ro.log_file);
+    const bool append = continues && std::filesystem::file_size(ro.log_file) > 0;
     log.open(ro.log_file, append ? std::ios::app : std::ios::trunc);
     if (!log) throw std::runtime_error("cannot write log file '" + ro.log_file.string() + "'");
     if (!append) {
