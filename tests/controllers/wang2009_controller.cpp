@@ -181,7 +181,9 @@ TEST_CASE("wang2009 controller: Table 2's start state, and Table 2 alone does no
     const rollout_result r =
         rollout(m, mixed_pd_actuator{}, c, distance_objective(), flat_terrain(),
                 semi_implicit_euler(), std::span<const double>(p), opt, scratch);
-    CHECK(r.reason == stop_reason::fell);
+    // It falls; the fall ends in a blow-up (COM faster than 100 m/s) before the fall test sees it,
+    // which the rollout reports as a divergence since divergence_com_speed: either is a failure.
+    CHECK((r.reason == stop_reason::fell || r.reason == stop_reason::non_finite));
     CHECK(r.time < 10.0);
   }
 }
