@@ -6,6 +6,14 @@
 
 namespace gaitsynth {
 
+namespace detail {
+/// Column of a motion axis S about the reference point: the velocity of the point r is
+/// S.lin + S.ang x r.
+inline vec3 point_velocity_column(const svec& S, const vec3& r) {
+  return lin(S) + ang(S).cross(r);
+}
+}  // namespace detail
+
 /// J (3 x nv): world velocity of the point p_body (body frame) of `body` is J v. Computes the poses
 /// for q (cached when forward_kinematics already ran for the same q).
 /// \throws std::invalid_argument on wrong sizes or a bad body index.
@@ -24,11 +32,8 @@ void point_jacobian(const model<Root>& m, workspace<Root>& ws,
   constexpr int nvr = Root::nv;
   const vec3 r = s.body_rel[body] + ws.body_rotation[body] * p_body;  // relative to the reference
   J.setZero();
-  // Column of a motion axis S about the reference: velocity of the point r is S.lin + S.ang x r.
-  for (int n = s.body_node[body]; n > 0; n = s.node_parent[n]) {
-    const detail::svec& S = s.S[n];
-    J.col(nvr + n - 1) = detail::lin(S) + detail::ang(S).cross(r);
-  }
+  for (int n = s.body_node[body]; n > 0; n = s.node_parent[n])
+    J.col(nvr + n - 1) = detail::point_velocity_column(s.S[n], r);
   if constexpr (nvr > 0) {
     for (int i = 0; i < nvr; ++i) {
       const auto Si = s.S0.col(i);
@@ -58,14 +63,10 @@ void relative_point_jacobian(const model<Root>& m, workspace<Root>& ws,
   const auto& s = ws.scratch;
   const vec3 r = s.body_rel[body] + ws.body_rotation[body] * p_body;
   J.setZero();
-  for (int n = s.body_node[body]; n > 0; n = s.node_parent[n]) {
-    const detail::svec& S = s.S[n];
-    J.col(n - 1) += detail::lin(S) + detail::ang(S).cross(r);
-  }
-  for (int n = s.body_node[reference]; n > 0; n = s.node_parent[n]) {
-    const detail::svec& S = s.S[n];
-    J.col(n - 1) -= detail::lin(S) + detail::ang(S).cross(r);
-  }
+  for (int n = s.body_node[body]; n > 0; n = s.node_parent[n])
+    J.col(n - 1) += detail::point_velocity_column(s.S[n], r);
+  for (int n = s.body_node[reference]; n > 0; n = s.node_parent[n])
+    J.col(n - 1) -= detail::point_velocity_column(s.S[n], r);
 }
 
 /// J (3 x nv): world angular velocity of `body` is J v.
