@@ -52,7 +52,10 @@ struct cli {
 /// deterministic and the training terrains and bodies are fixed), so there is no --seed. The run
 /// folder (--out DIR, default out/<example>/<UTC time>/) gets options.json; --resume DIR parses
 /// the options recorded there again and continues from the run's checkpoints.
-inline cli parse(int argc, char** argv, const char* what) {
+/// `normal_walk`: also the flags only sharon2005_normal_walk uses (its bumpy and body training
+/// variants and its stage 1); the other examples do not offer them, so a user who gives one is
+/// told (unknown option) instead of having it silently ignored.
+inline cli parse(int argc, char** argv, const char* what, bool normal_walk = false) {
   const std::string name = std::filesystem::path(argv[0]).filename().string();
   cli c;
   CLI::App app{what, name};
@@ -76,13 +79,15 @@ inline cli parse(int argc, char** argv, const char* what) {
   app.add_option("--initial-controller", c.initial_controller,
                  "start the search from a saved controller (JSON)")
       ->check(CLI::ExistingFile);
-  app.add_option("--bumpy-training", c.bumpy_training,
-                 "also evaluate each candidate on N bumpy terrains (-1: the example's)")
-      ->check(example_cli::integer_in(-1, 64));
-  app.add_option("--body-training", c.body_training,
-                 "also evaluate each candidate on N randomized bodies (-1: the example's)")
-      ->check(example_cli::integer_in(-1, 64));
-  app.add_flag("--stage1-only", c.stage1_only, "normal walk: only the paper's flat-ground stage");
+  if (normal_walk) {
+    app.add_option("--bumpy-training", c.bumpy_training,
+                   "also evaluate each candidate on N bumpy terrains (-1: the example's)")
+        ->check(example_cli::integer_in(-1, 64));
+    app.add_option("--body-training", c.body_training,
+                   "also evaluate each candidate on N randomized bodies (-1: the example's)")
+        ->check(example_cli::integer_in(-1, 64));
+    app.add_flag("--stage1-only", c.stage1_only, "only the paper's flat-ground stage");
+  }
   app.add_flag("--align-style", c.align_style,
                "compare shapes only: the target follows the COM along x (for long episodes)");
   app.add_option("--keyframes", c.keyframes, "target motion (default: the data/sharon2005 file)")

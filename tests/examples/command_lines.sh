@@ -61,6 +61,16 @@ case "$mode" in
         expect 2 "--controller-rate: must be in .*, got -5" -- "$exe" --controller-rate -5
         expect 1 "--controller-rate must be 0 .* or above 2 Hz.*got 1" -- "$exe" --controller-rate 1
       fi
+      case "$name" in
+        # The normal walk's training flags, which the other Sharon examples used to ignore.
+        sharon2005_high_knee | sharon2005_backswing | sharon2005_human16 | sharon2005_uphill)
+          expect 2 "unknown option '--bumpy-training'" -- "$exe" --bumpy-training 2
+          expect 2 "unknown option '--stage1-only'" -- "$exe" --stage1-only
+          ;;
+        sharon2005_normal_walk)
+          expect 2 "--bumpy-training: must be in .*, got 65" -- "$exe" --bumpy-training 65
+          ;;
+      esac
       if grep -q -- "--html" <<<"$help"; then
         expect 2 "--html" -- "$exe" --html
       fi
