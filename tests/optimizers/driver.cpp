@@ -126,6 +126,47 @@ TEST_CASE("a resumed run's log drops the row a kill tore", "[optimizers]") {
   std::filesystem::remove_all(dir);
 }
 
+TEST_CASE("a resumed run's elapsed_s counts on from the log's last row", "[optimizers]") {
+  const auto dir = std::filesystem::temp_directory_path() / "gaitsynth_elapsed_log";
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  run_options ro;
+  ro.log_file = dir / "log.csv";
+  ro.checkpoint_file = dir / "run.ckpt";
+  ro.checkpoint_every = 5;
+  ro.resume = true;
+  cmaes_options o;
+  o.stop.max_iterations = 20;
+  const auto space = parameter_space::unbounded(Eigen::VectorXd::Ones(4));
+  {
+    cmaes first(space, o);
+    minimize(first, tf::sphere, ro, [](const optimizer_status& s) { return s.iteration < 10; });
+  }
+  // The first call had run 1000 s by its last row (the log is rewritten to say so).
+  auto rows = read_csv(ro.log_file);
+  REQUIRE(rows.size() == 11);
+  rows.back()[12] = "1000.000";
+  {
+    std::ofstream out(ro.log_file, std::ios::trunc);
+    for (const auto& r : rows) {
+      for (std::size_t i = 0; i < r.size(); ++i) out << (i ? "," : "") << r[i];
+      out << '\n';
+    }
+  }
+  cmaes second(space, o);
+  const optimization_result res = minimize(second, tf::sphere, ro);
+  REQUIRE(res.resumed);
+  rows = read_csv(ro.log_file);
+  REQUIRE(rows.size() == 21);
+  for (std::size_t i = 11; i < rows.size(); ++i) {
+    INFO("row " << i << ": elapsed_s " << rows[i][12]);
+    CHECK(std::stod(rows[i][12]) >= 1000.0);
+    CHECK(std::stod(rows[i][12]) >= std::stod(rows[i - 1][12]));
+  }
+  CHECK(res.elapsed_seconds < 1000.0);  // the result's is this call's alone
+  std::filesystem::remove_all(dir);
+}
+
 TEST_CASE("continuation starts each stage from the previous result", "[optimizers]") {
   // Stage k: minimum at c_k = 1, 2, 3 (like a horizon or slope that grows by stages).
   const std::vector<double> centers = {1.3, 2.1, 3.7};

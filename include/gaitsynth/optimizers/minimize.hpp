@@ -10,6 +10,7 @@
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
@@ -58,8 +59,9 @@ struct optimization_result {
   /// Each run of a restarting optimizer (cmaes_restarts::runs()): population, evaluations and its
   /// own stop criterion; empty for optimizers that do not restart.
   std::vector<run_record> runs;
-  double elapsed_seconds = 0;  ///< wall time of this call (not of earlier, checkpointed calls)
-  bool resumed = false;        ///< started from a checkpoint
+  double elapsed_seconds =
+      0;                 ///< wall time of this call (the log's elapsed_s counts on across calls)
+  bool resumed = false;  ///< started from a checkpoint
 };
 
 /// Callback type that does nothing.
@@ -87,6 +89,25 @@ inline void drop_torn_last_line(const std::filesystem::path& file) {
   if (text.empty() || text.back() == '\n') return;
   const std::size_t keep = text.rfind('\n');
   std::filesystem::resize_file(file, keep == std::string::npos ? 0 : keep + 1);
+}
+
+/// The elapsed_s (13th column) of the last row of a convergence log, 0 when there is none (an
+/// empty file, a header alone, an unreadable cell): a continued log counts on from it.
+inline double last_logged_elapsed(const std::filesystem::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  std::string line, last;
+  while (std::getline(in, line))
+    if (!line.empty()) last = line;
+  std::size_t start = 0;
+  for (int column = 0; column < 12 && start != std::string::npos; ++column) {
+    start = last.find(',', start);
+    if (start != std::string::npos) ++start;
+  }
+  if (start == std::string::npos || start >= last.size()) return 0.0;
+  const char* first = last.c_str() + start;
+  char* end = nullptr;
+  const double t = std::strtod(first, &end);
+  return end != first && std::isfinite(t) && t > 0.0 ? t : 0.0;
 }
 
 inline std::string format_seconds(double s) {
@@ -161,11 +182,13 @@ optimization_result minimize(O&& opt, F&& objective, E&& eval, const run_options
   }
   const auto& space = opt.space();
   std::ofstream log;
+  double log_elapsed_offset = 0.0;  // a continued log's elapsed_s counts on across calls
   if (!ro.log_file.empty()) {
     const bool continues =
         (result.resumed || ro.append_log) && std::filesystem::exists(ro.log_file);
     if (continues) detail::drop_torn_last_line(ro.log_file);
     const bool append = continues && std::filesystem::file_size(ro.log_file) > 0;
+    if (append) log_elapsed_offset = detail::last_logged_elapsed(ro.log_file);
     log.open(ro.log_file, append ? std::ios::app : std::ios::trunc);
     if (!log) throw std::runtime_error("cannot write log file '" + ro.log_file.string() + "'");
     if (!append) {
@@ -183,7 +206,7 @@ optimization_result minimize(O&& opt, F&& objective, E&& eval, const run_options
                   s.restart, static_cast<long long>(s.iteration),
                   static_cast<long long>(s.evaluations), s.best_value, s.iteration_best,
                   s.iteration_median, s.iteration_worst, s.step_size, s.axis_ratio, s.batch_size,
-                  static_cast<long long>(s.non_finite), t);
+                  static_cast<long long>(s.non_finite), log_elapsed_offset + t);
     log << buf;
     if (ro.log_parameters) {
       const Eigen::VectorXd& x = opt.best_x();
