@@ -121,14 +121,12 @@ void check_walker_on(const reported& w, const Terrain& ground) {
                                      << " s");
     walking += walked(rk);
   }
-  // A walker is robust when at least 8 of the 10 perturbed starts walk (the page gives the count
-  // of CI's build); one below 8 is not claimed robust, only kept from getting worse, with one
-  // start of slack for other builds' rounding.
+  // Every claimed walker walks from at least 8 of the 10 perturbed starts (issue 15's rule; the
+  // page gives the count of CI's build, other builds' rounding may lose one or two above 8). A
+  // walker below that is a run record, not a claim (Fig. 4 without E_ang, the first overweight).
   INFO(walking << " of 10 perturbed starts walk; the page reports " << w.perturbed_walked);
-  if (w.perturbed_walked >= 8)
-    CHECK(walking >= 8);
-  else
-    CHECK(walking >= w.perturbed_walked - 1);
+  REQUIRE(w.perturbed_walked >= 8);
+  CHECK(walking >= 8);
 }
 
 /// Checks walker w on the ground it was optimized on: its info's slope (uphill along +x).
@@ -333,19 +331,62 @@ TEST_CASE("wang2009: the thin walker walks 100 s", "[wang2009][claim]") {
       {"thin_cot.controller.json", 1.341, 0.549, {0.719, 0.129, 0.152}, 10, {false, false}});
 }
 
+// The overweight shape's 250 iterations walked 100 s from only 7 of 10 perturbed starts (kept in
+// data/wang2009/runs/overweight_cot/); 100 more with 2 perturbed starts in every cost and 20 s
+// horizons give this one (data/wang2009/runs/overweight_robust/).
 TEST_CASE("wang2009: the overweight walker walks 100 s", "[wang2009][claim]") {
-  check_walker(
-      {"overweight_cot.controller.json", 1.431, 0.546, {0.782, 0.092, 0.126}, 7, {false, false}});
+  check_walker({"overweight_robust.controller.json",
+                0.995,
+                0.331,
+                {0.745, 0.122, 0.133},
+                10,
+                {false, false}});
 }
 
-// Fig. 4's set-up (stocky, 1.8 m/s, 0.7 m steps) without E_ang.
-TEST_CASE("wang2009: Fig. 4's walker without E_ang walks 100 s", "[wang2009][claim]") {
-  check_walker({"stocky_fig4_without_ang.controller.json",
-                1.690,
-                0.525,
-                {0.619, 0.065, 0.315},
-                7,
-                {false, false}});
+// Fig. 4's set-up (stocky, 1.8 m/s, 0.7 m steps) without E_ang. Its 250 iterations gave a walker
+// that walks 100 s only in CI's build and from 7 of 10 perturbed starts (it falls at 95.8 s with
+// FMA contraction; data/wang2009/runs/stocky_fig4_without_ang/, no claim). The robust stage that
+// gives the E_ang walker its 100 s from 10 of 10 perturbed starts (below: 150 iterations, 2
+// perturbed starts in every cost, sigma 0.005, seed 3) gives, without E_ang, a walker that walks
+// its 10 s horizon and falls soon after, from its own start and from perturbed ones: the paper's
+// "does not walk successfully much beyond" 10 s
+// (data/wang2009/runs/stocky_fig4_without_ang_robust/).
+TEST_CASE("wang2009: Fig. 4 without E_ang, the robust stage walks 10 s and then falls",
+          "[wang2009][claim]") {
+  const std::string path = std::string(GAITSYNTH_SOURCE_DIR) +
+                           "/data/wang2009/runs/stocky_fig4_without_ang_robust/"
+                           "wang2009_stocky.controller.json";
+  const floating_model m = wang2009_humanoid(wang2009_shape::stocky);
+  wang2009_controller c(m);
+  const std::vector<double> p = load_wang2009_controller(path, c).parameters;
+  rollout_options opt = wang2009_rollout_options(m);
+  auto scratch = make_rollout_scratch(m);
+  auto walk_from = [&](const Eigen::VectorXd& dv) {
+    opt.initial_velocity_offset = dv;
+    wang2009_controller ck = c;
+    return rollout(m, mixed_pd_actuator{}, ck, distance_objective(), flat_terrain{},
+                   semi_implicit_euler{}, std::span<const double>(p), opt, scratch);
+  };
+#ifdef GAITSYNTH_SANITIZED_BUILD
+  opt.duration = 10.0;
+  CHECK(walk_from(Eigen::VectorXd()).reason == stop_reason::horizon);
+  return;
+#endif
+  opt.duration = 100.0;
+  const rollout_result own = walk_from(Eigen::VectorXd());
+  INFO("own start: " << to_string(own.reason) << " after " << own.time << " s");
+  CHECK(own.reason == stop_reason::fell);
+  CHECK(own.time >= 10.0);  // 18.6 s in CI's build; when exactly is rounding, that it falls is not
+  int after_horizon = 0, before_100 = 0, k = 0;
+  for (const Eigen::VectorXd& dv : joint_velocity_perturbations(m, 10, 0.05, 2009)) {
+    const rollout_result r = walk_from(dv);
+    UNSCOPED_INFO("perturbed start " << k++ << ": " << to_string(r.reason) << " after " << r.time
+                                     << " s");
+    after_horizon += r.time >= 10.0;
+    before_100 += r.reason != stop_reason::horizon;
+  }
+  CHECK(after_horizon >= 8);
+  CHECK(before_100 >= 8);
 }
 
 // Fig. 4's set-up with E_ang: the walker that fell at 19.5 s (its run record), 150 more iterations
@@ -444,7 +485,7 @@ TEST_CASE("wang2009: Fig. 4, E_ang swings the arms with the opposite legs", "[wa
   const double with_ang =
       opposite_leg_correlation("runs/stocky_fig4_with_ang/wang2009_stocky.controller.json");
   const double without_ang =
-      opposite_leg_correlation("walkers/stocky_fig4_without_ang.controller.json");
+      opposite_leg_correlation("runs/stocky_fig4_without_ang/wang2009_stocky.controller.json");
   // The walker of the same set-up that walks 100 s (robust stage) swings them less.
   const double with_ang_robust =
       opposite_leg_correlation("walkers/stocky_fig4_with_ang.controller.json");
