@@ -32,8 +32,8 @@ TEST_CASE("wang2009_transfer_parameters carries Table 2 from stocky to every sha
   }
   // To its own shape a vector is carried bit for bit (a replay must retrace the optimized walk).
   CHECK(wang2009_transfer_parameters(stocky, cs, p, stocky, cs) == p);
-  const std::string saved =
-      std::string(GAITSYNTH_SOURCE_DIR) + "/data/wang2009/walkers/overweight_robust.controller.json";
+  const std::string saved = std::string(GAITSYNTH_SOURCE_DIR) +
+                            "/data/wang2009/walkers/overweight_robust.controller.json";
   const auto ow = wang2009_humanoid(wang2009_shape::overweight);
   const wang2009_controller co(ow);
   const std::vector<double> q = load_wang2009_controller(saved, co).parameters;
