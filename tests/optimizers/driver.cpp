@@ -25,6 +25,28 @@ std::vector<std::vector<std::string>> read_csv(const std::filesystem::path& p) {
   }
   return rows;
 }
+
+/// CMA-ES on a 4-D sphere with a budget of 20 iterations.
+cmaes twenty_iterations() {
+  cmaes_options o;
+  o.stop.max_iterations = 20;
+  return cmaes(parameter_space::unbounded(Eigen::VectorXd::Ones(4)), o);
+}
+
+/// A run in the fresh folder `dir` (log and checkpoint every 5 iterations, resume on) whose first
+/// call stopped after 10 of its 20 iterations: what the resume tests start from.
+run_options interrupted_at_ten(const std::filesystem::path& dir) {
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  run_options ro;
+  ro.log_file = dir / "log.csv";
+  ro.checkpoint_file = dir / "run.ckpt";
+  ro.checkpoint_every = 5;
+  ro.resume = true;
+  cmaes first = twenty_iterations();
+  minimize(first, tf::sphere, ro, [](const optimizer_status& s) { return s.iteration < 10; });
+  return ro;
+}
 }  // namespace
 
 TEST_CASE("minimize writes one CSV row per iteration", "[optimizers]") {
@@ -89,26 +111,13 @@ TEST_CASE("the progress line's time left extrapolates this call's pace, also aft
 
 TEST_CASE("a resumed run's log drops the row a kill tore", "[optimizers]") {
   const auto dir = std::filesystem::temp_directory_path() / "gaitsynth_torn_log";
-  std::filesystem::remove_all(dir);
-  std::filesystem::create_directories(dir);
-  run_options ro;
-  ro.log_file = dir / "log.csv";
-  ro.checkpoint_file = dir / "run.ckpt";
-  ro.checkpoint_every = 5;
-  ro.resume = true;
-  cmaes_options o;
-  o.stop.max_iterations = 20;
-  const auto space = parameter_space::unbounded(Eigen::VectorXd::Ones(4));
-  {
-    cmaes first(space, o);
-    minimize(first, tf::sphere, ro, [](const optimizer_status& s) { return s.iteration < 10; });
-  }
+  const run_options ro = interrupted_at_ten(dir);
   // The process dies in the middle of writing a row (no newline).
   {
     std::ofstream torn(ro.log_file, std::ios::app);
     torn << "0,0,11,110,0.0012";
   }
-  cmaes second(space, o);
+  cmaes second = twenty_iterations();
   REQUIRE(minimize(second, tf::sphere, ro).resumed);
   const auto rows = read_csv(ro.log_file);
   REQUIRE(rows.size() == 21);  // the header and iterations 1-20 (the checkpoint is at 10)
@@ -120,7 +129,7 @@ TEST_CASE("a resumed run's log drops the row a kill tore", "[optimizers]") {
     std::ofstream torn(ro.log_file, std::ios::trunc);
     torn << "stage,restart,iter";
   }
-  cmaes third(space, o);
+  cmaes third = twenty_iterations();
   minimize(third, tf::sphere, ro);
   CHECK(read_csv(ro.log_file).front().size() == rows.front().size());
   std::filesystem::remove_all(dir);
@@ -128,20 +137,7 @@ TEST_CASE("a resumed run's log drops the row a kill tore", "[optimizers]") {
 
 TEST_CASE("a resumed run's elapsed_s counts on from the log's last row", "[optimizers]") {
   const auto dir = std::filesystem::temp_directory_path() / "gaitsynth_elapsed_log";
-  std::filesystem::remove_all(dir);
-  std::filesystem::create_directories(dir);
-  run_options ro;
-  ro.log_file = dir / "log.csv";
-  ro.checkpoint_file = dir / "run.ckpt";
-  ro.checkpoint_every = 5;
-  ro.resume = true;
-  cmaes_options o;
-  o.stop.max_iterations = 20;
-  const auto space = parameter_space::unbounded(Eigen::VectorXd::Ones(4));
-  {
-    cmaes first(space, o);
-    minimize(first, tf::sphere, ro, [](const optimizer_status& s) { return s.iteration < 10; });
-  }
+  const run_options ro = interrupted_at_ten(dir);
   // The first call had run 1000 s by its last row (the log is rewritten to say so).
   auto rows = read_csv(ro.log_file);
   REQUIRE(rows.size() == 11);
@@ -153,7 +149,7 @@ TEST_CASE("a resumed run's elapsed_s counts on from the log's last row", "[optim
       out << '\n';
     }
   }
-  cmaes second(space, o);
+  cmaes second = twenty_iterations();
   const optimization_result res = minimize(second, tf::sphere, ro);
   REQUIRE(res.resumed);
   rows = read_csv(ro.log_file);
