@@ -59,8 +59,8 @@ struct optimization_result {
   /// Each run of a restarting optimizer (cmaes_restarts::runs()): population, evaluations and its
   /// own stop criterion; empty for optimizers that do not restart.
   std::vector<run_record> runs;
-  double elapsed_seconds =
-      0;                 ///< wall time of this call (the log's elapsed_s counts on across calls)
+  /// Wall time of this call (the log's elapsed_s counts on across calls).
+  double elapsed_seconds = 0;
   bool resumed = false;  ///< started from a checkpoint
 };
 
