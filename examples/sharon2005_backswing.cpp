@@ -11,7 +11,8 @@
 int main(int argc, char** argv) try {
   using namespace gaitsynth;
   const auto c = sharon_example::parse(
-      argc, argv, "optimize the back-swing style walk (Sharon & van de Panne 2005, Fig. 6c)");
+      argc, argv, "optimize the back-swing style walk (Sharon & van de Panne 2005, Fig. 6c)",
+      {.disturbances = true});
   const planar_model m = sharon2005_human7();
   const std::string kf_path = sharon_example::keyframes_path(c, "backswing.keyframes.json");
   const keyframe_motion<planar_root> target = load_keyframes(m, kf_path);
@@ -27,8 +28,13 @@ int main(int argc, char** argv) try {
   so.evaluations_per_episode = 1000;
   so.horizons.clear();
   for (int k = 1; k <= 15; ++k) so.horizons.push_back(k / 5.0);  // 0.2, 0.4, ..., 3 s
-  return sharon_example::synthesize_and_report("sharon2005_backswing", prob, so, c,
-                                               {{"keyframes", kf_path}, {"figure", "6c"}});
+  return sharon_example::with_disturbance_training(prob, target, c, [&](const auto& p) {
+    return sharon_example::synthesize_and_report(
+        "sharon2005_backswing", p, so, c,
+        {{"keyframes", kf_path},
+         {"figure", "6c"},
+         {"disturbance_training", c.disturbance_training}});
+  });
 } catch (const std::exception& e) {
   std::cerr << "error: " << e.what() << "\n";
   return 1;

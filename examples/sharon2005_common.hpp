@@ -23,8 +23,11 @@
 #include "gaitsynth/model/model.hpp"
 #include "gaitsynth/motion/keyframes.hpp"
 #include "gaitsynth/objectives/mass_distance.hpp"
+#include "gaitsynth/rollout/problem_with_variants.hpp"
 #include "gaitsynth/rollout/start_perturbations.hpp"
 #include "gaitsynth/synthesis/nearest_neighbor_synthesis.hpp"
+#include "gaitsynth/synthesis/sharon2005_disturbances.hpp"
+#include "gaitsynth/synthesis/sharon2005_scenarios.hpp"
 
 namespace sharon_example {
 
@@ -41,21 +44,28 @@ struct cli {
   int body_training = -1;     // -1: the example's default number of randomized training bodies
   bool align_style =
       false;  // mass distance on shapes only (mass_distance_options::align_horizontal)
-  bool stage1_only = false;        // normal walk: stop after the paper's flat-ground stage
-  std::vector<double> horizons;    // explicit episode horizons, s (overrides --max-horizon)
-  std::string initial_controller;  // start from this saved controller instead of the keyframes
-  bool resume = false;             // --resume DIR: continue the run in DIR from its checkpoints
-  gaitsynth::viz_outputs viz;      // --html, --filmstrip, ... of the 70 s check
+  bool stage1_only = false;           // normal walk: stop after the paper's flat-ground stage
+  bool disturbance_training = false;  // 7-link styles: also under training_disturbances()
+  double min_progress_speed = 0.0;    // > 0: a rollout of the cost that advances less than this
+                                      // (m/s, over any 2 s window) stops, charged as a fall
+  std::vector<double> horizons;       // explicit episode horizons, s (overrides --max-horizon)
+  std::string initial_controller;     // start from this saved controller instead of the keyframes
+  bool resume = false;                // --resume DIR: continue the run in DIR from its checkpoints
+  gaitsynth::viz_outputs viz;         // --html, --filmstrip, ... of the 70 s check
 };
 
 /// The command line (command_line.hpp). The synthesis draws no random numbers (SDS is
 /// deterministic and the training terrains and bodies are fixed), so there is no --seed. The run
 /// folder (--out DIR, default out/<example>/<UTC time>/) gets options.json; --resume DIR parses
 /// the options recorded there again and continues from the run's checkpoints.
-/// `normal_walk`: also the flags only sharon2005_normal_walk uses (its bumpy and body training
-/// variants and its stage 1); the other examples do not offer them, so a user who gives one is
-/// told (unknown option) instead of having it silently ignored.
-inline cli parse(int argc, char** argv, const char* what, bool normal_walk = false) {
+/// Flags only some examples offer; the others do not, so a user who gives one is told (unknown
+/// option) instead of having it silently ignored.
+struct example_flags {
+  bool normal_walk = false;   ///< its bumpy and body training variants and its stage 1
+  bool disturbances = false;  ///< --disturbance-training (the 7-link styles)
+};
+
+inline cli parse(int argc, char** argv, const char* what, example_flags flags = {}) {
   const std::string name = std::filesystem::path(argv[0]).filename().string();
   cli c;
   CLI::App app{what, name};
@@ -79,7 +89,11 @@ inline cli parse(int argc, char** argv, const char* what, bool normal_walk = fal
   app.add_option("--initial-controller", c.initial_controller,
                  "start the search from a saved controller (JSON)")
       ->check(CLI::ExistingFile);
-  if (normal_walk) {
+  if (flags.disturbances)
+    app.add_flag("--disturbance-training", c.disturbance_training,
+                 "also evaluate each candidate on slopes, low friction, pushes and torso masses "
+                 "(sharon_scenarios::training_disturbances; never the test's)");
+  if (flags.normal_walk) {
     app.add_option("--bumpy-training", c.bumpy_training,
                    "also evaluate each candidate on N bumpy terrains (-1: the example's)")
         ->check(example_cli::integer_in(-1, 64));
@@ -90,6 +104,11 @@ inline cli parse(int argc, char** argv, const char* what, bool normal_walk = fal
   }
   app.add_flag("--align-style", c.align_style,
                "compare shapes only: the target follows the COM along x (for long episodes)");
+  app.add_option("--min-progress-speed", c.min_progress_speed,
+                 "stop a rollout of the cost, charged as a fall, when its COM advances less than "
+                 "this speed times 2 s in a 2 s window (0: off; with --align-style it keeps "
+                 "walking in place from being cheap)")
+      ->check(example_cli::in_range(0.0, 10.0));
   app.add_option("--keyframes", c.keyframes, "target motion (default: the data/sharon2005 file)")
       ->check(CLI::ExistingFile);
   app.add_flag("--single-start", c.single_start,
@@ -259,11 +278,40 @@ auto make_problem(const gaitsynth::planar_model& m,
   using namespace gaitsynth;
   rollout_options ro;
   ro.initial_state = target.initial_state();
+  if (c.min_progress_speed > 0.0)
+    ro.stall = {.window = 2.0, .min_progress = 2.0 * c.min_progress_speed};
   rollout_problem prob{
       m,      torque_actuator{},     c0, mass_distance<planar_root>(m, target, style_options(c)),
       ground, semi_implicit_euler{}, ro};
   set_starts(prob, c);
   return prob;
+}
+
+/// `prob` with, if --disturbance-training, the training disturbances as variants (one rollout
+/// each: the keyframes' first state placed on its ground, its friction, pushes and torso mass),
+/// passed to run(problem); run(prob) otherwise. The variants keep references to their models,
+/// which live here until run returns.
+template <class Problem, class Run>
+int with_disturbance_training(const Problem& prob,
+                              const gaitsynth::keyframe_motion<gaitsynth::planar_root>& target,
+                              const cli& c, Run&& run) {
+  using namespace gaitsynth;
+  if (!c.disturbance_training) return run(prob);
+  using variant = nn_problem<planar_root, torque_actuator, mass_distance<planar_root>,
+                             slope_terrain, semi_implicit_euler>;
+  const auto training = sharon_scenarios::training_disturbances();
+  std::vector<planar_model> bodies;
+  bodies.reserve(training.size());
+  std::vector<variant> variants;
+  for (const auto& d : training) {
+    bodies.push_back(sharon2005_human7(d.body()));
+    rollout_options o = d.apply(prob.options, /*horizon=*/600.0);
+    o.initial_state = sharon_scenarios::start_state_for(bodies.back(), target, d.ground());
+    variants.push_back(variant{bodies.back(), torque_actuator{}, prob.controller,
+                               mass_distance<planar_root>(bodies.back(), target, style_options(c)),
+                               d.ground(), semi_implicit_euler{}, o});
+  }
+  return run(make_problem_with_variants(prob, std::move(variants)));
 }
 
 /// The viewer flags (--html, --filmstrip, ...; command_line.hpp) for the check rollout; the

@@ -9,7 +9,8 @@
 int main(int argc, char** argv) try {
   using namespace gaitsynth;
   const auto c = sharon_example::parse(
-      argc, argv, "optimize the high-knee style walk (Sharon & van de Panne 2005, Fig. 6a)");
+      argc, argv, "optimize the high-knee style walk (Sharon & van de Panne 2005, Fig. 6a)",
+      {.disturbances = true});
   const planar_model m = sharon2005_human7();
   const std::string kf_path = sharon_example::keyframes_path(c, "high_knee.keyframes.json");
   const keyframe_motion<planar_root> target = load_keyframes(m, kf_path);
@@ -19,8 +20,13 @@ int main(int argc, char** argv) try {
   const auto prob = sharon_example::make_problem(m, target, c0, c);
   nn_synthesis_options so = sharon_example::synthesis_defaults();
   so.evaluations_per_episode = 700;  // 144 parameters: about 2.5 sweeps per episode
-  return sharon_example::synthesize_and_report("sharon2005_high_knee", prob, so, c,
-                                               {{"keyframes", kf_path}, {"figure", "6a"}});
+  return sharon_example::with_disturbance_training(prob, target, c, [&](const auto& p) {
+    return sharon_example::synthesize_and_report(
+        "sharon2005_high_knee", p, so, c,
+        {{"keyframes", kf_path},
+         {"figure", "6a"},
+         {"disturbance_training", c.disturbance_training}});
+  });
 } catch (const std::exception& e) {
   std::cerr << "error: " << e.what() << "\n";
   return 1;

@@ -36,7 +36,7 @@ int main(int argc, char** argv) try {
   const auto c = sharon_example::parse(
       argc, argv,
       "optimize a normal walk of the 7-link human (Sharon & van de Panne 2005, Fig. 5a)",
-      /*normal_walk=*/true);
+      {.normal_walk = true});
   const planar_model m = sharon2005_human7();
   const std::string kf_path = sharon_example::keyframes_path(c, "normal_walk.keyframes.json");
   const keyframe_motion<planar_root> target = load_keyframes(m, kf_path);

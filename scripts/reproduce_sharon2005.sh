@@ -63,6 +63,19 @@ log "high knee (Fig. 6a/b)"
 "$bin"/sharon2005_high_knee --out "$out/high_knee" | tee "$out/high_knee.json"
 log "back swing (Fig. 6c/d)"
 "$bin"/sharon2005_backswing --out "$out/backswing" | tee "$out/backswing.json"
+# Robustness (issue 15): four stages with the training disturbances in the cost (slopes, low
+# friction, pushes, torso masses), shapes only, a walk slower than 0.5 m/s charged like a fall.
+bs() {
+  "$bin"/sharon2005_backswing --out "$out/backswing_$1" --initial-controller "$2" \
+    --disturbance-training --align-style --min-progress-speed 0.5 "${@:3}" |
+    tee "$out/backswing_$1.json"
+}
+bsc() { echo "$out/backswing_$1/sharon2005_backswing.controller.json"; }
+bs d1 "$out/backswing/sharon2005_backswing.controller.json" --horizons 5,10,20 \
+  --evaluations-per-episode 300
+bs d2 "$(bsc d1)" --horizons 3,5,10,20 --evaluations-per-episode 500
+bs d3 "$(bsc d2)" --horizons 2,3,5,10 --evaluations-per-episode 700
+bs d4 "$(bsc d3)" --horizons 3,5,10,20 --evaluations-per-episode 400
 log "uphill (Fig. 7)"
 "$bin"/sharon2005_uphill --out "$out/uphill" | tee "$out/uphill.json"
 
@@ -70,7 +83,7 @@ if (( install )); then
   cp "$(prev 6)" data/sharon2005/normal_walk.controller.json
   cp "$out/human16_6/sharon2005_human16.controller.json" data/sharon2005/human16_walk.controller.json
   cp "$out/high_knee/sharon2005_high_knee.controller.json" data/sharon2005/high_knee.controller.json
-  cp "$out/backswing/sharon2005_backswing.controller.json" data/sharon2005/backswing.controller.json
+  cp "$(bsc d4)" data/sharon2005/backswing.controller.json
   cp "$out/uphill/sharon2005_uphill.controller.json" data/sharon2005/uphill.controller.json
 fi
 

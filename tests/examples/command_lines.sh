@@ -71,6 +71,15 @@ case "$mode" in
           expect 2 "--bumpy-training: must be in .*, got 65" -- "$exe" --bumpy-training 65
           ;;
       esac
+      case "$name" in
+        # Disturbance training: the 7-link styles only.
+        sharon2005_high_knee | sharon2005_backswing)
+          expect 2 "--min-progress-speed: must be in .*, got -1" -- "$exe" --min-progress-speed -1
+          ;;
+        sharon2005_normal_walk | sharon2005_human16 | sharon2005_uphill)
+          expect 2 "unknown option '--disturbance-training'" -- "$exe" --disturbance-training
+          ;;
+      esac
       if grep -q -- "--html" <<<"$help"; then
         expect 2 "--html" -- "$exe" --html
       fi

@@ -62,7 +62,7 @@ TEST_CASE("mass distance: eq. 2 against hand-computed values", "[objectives][mas
   CHECK(delta(m, q, q0) == Approx(1.0 * c4 * c4 + 0.5 * c4 * c4 + 0.5 * c8 * c8));
 }
 
-TEST_CASE("mass distance: eq. 3 integrates delta over time, and falls pay for the time left",
+TEST_CASE("mass distance: eq. 3 integrates delta over time, falls and stalls pay for the time left",
           "[objectives][mass_distance]") {
   const auto m = small_biped();
   const Eigen::VectorXd q0 = vec({0.0, 1.0, 0.0, 0.0, 0.0, 0.0, 0.0});
@@ -93,6 +93,8 @@ TEST_CASE("mass distance: eq. 3 integrates delta over time, and falls pay for th
   out.reason = stop_reason::horizon;
   CHECK(obj.finish(acc, out) == Approx(0.16 * 1.5));
   out.reason = stop_reason::fell;  // 0.5 s left at max(0.16, 50) kg m^2
+  CHECK(obj.finish(acc, out) == Approx(0.16 * 1.5 + 0.5 * 50.0));
+  out.reason = stop_reason::stalled;  // standing still is no cheaper than falling
   CHECK(obj.finish(acc, out) == Approx(0.16 * 1.5 + 0.5 * 50.0));
   double terms[2];
   obj.terms(acc, terms);

@@ -21,7 +21,9 @@
 /// would lie on the ground for the rest of the episode. finish() charges the remaining time at the
 /// rate max(delta at the fall, fall_rate), where fall_rate defaults to the mass distance of the
 /// target's first pose from the same pose collapsed to the ground (every point's height set to 0):
-/// the error of a character lying on the floor.
+/// the error of a character lying on the floor. A rollout stopped by the stall rule (a cost that
+/// turns rollout_options::stall on) is charged the same way: otherwise standing still would end the
+/// episode early and cheaply.
 ///
 /// Usable with any controller; any model with a keyframe_motion of the same root type.
 #include <Eigen/Core>
@@ -180,10 +182,10 @@ class mass_distance {
     a.time += v.dt;
   }
 
-  /// eq. 3, plus the fall charge (see the file comment).
+  /// eq. 3, plus the fall charge for a fall or a stall (see the file comment).
   double finish(const accumulator_type& a, const rollout_outcome& out) const {
     double c = a.integral;
-    if (out.reason == stop_reason::fell)
+    if (out.reason == stop_reason::fell || out.reason == stop_reason::stalled)
       c += std::max(out.duration - out.time, 0.0) * std::max(a.delta, fall_rate_);
     return c;
   }

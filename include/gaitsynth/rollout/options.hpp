@@ -36,7 +36,7 @@ struct rollout_options {
   bool detect_falls = true;
   double fall_height = 0.0;    ///< m; if > 0 used as is
   double fall_fraction = 0.5;  ///< else: this fraction of the initial COM height above terrain
-  stall_detection stall{};     ///< off by default (the optimizers' costs never see it)
+  stall_detection stall{};     ///< off by default (a cost that turns it on must charge a stall)
   /// Divergence by speed: a COM faster than this (m/s) ends the rollout as stop_reason::non_finite.
   /// An explicit step that blows up often leaves q and v huge but finite for a step or two, and the
   /// fall test then reported a "fall" 1e10 m away; no biped's COM moves at 100 m/s (a 10 m free
