@@ -43,7 +43,7 @@ nw 5 --initial-controller "$(prev 4)" --align-style --bumpy-training 12 --body-t
 nw 6 --initial-controller "$(prev 5)" --align-style --bumpy-training 12 --body-training 12 \
   --horizons 10 --evaluations-per-episode 250
 
-# Fig. 5c/d: the example's run, then two stages over longer episodes, then four with noisy starts.
+# Fig. 5c/d: the example's run, then two stages over longer episodes, then five with noisy starts.
 log "16-link human (Fig. 5c/d)"
 h16() { "$bin"/sharon2005_human16 --out "$out/human16_$1" "${@:2}" | tee "$out/human16_$1.json"; }
 h16 1
@@ -60,6 +60,8 @@ h16 5 --initial-controller "$out/human16_4/sharon2005_human16.controller.json" -
 h16 6 --initial-controller "$out/human16_5/sharon2005_human16.controller.json" --horizons 2,3,5 \
   --noisy-starts 24
 h16 7 --initial-controller "$out/human16_6/sharon2005_human16.controller.json" --horizons 3,5,10 \
+  --noisy-starts 24
+h16 8 --initial-controller "$out/human16_7/sharon2005_human16.controller.json" --horizons 5,10 \
   --noisy-starts 24
 log "high knee (Fig. 6a/b)"
 "$bin"/sharon2005_high_knee --out "$out/high_knee" | tee "$out/high_knee.json"
@@ -83,7 +85,7 @@ log "uphill (Fig. 7)"
 
 if (( install )); then
   cp "$(prev 6)" data/sharon2005/normal_walk.controller.json
-  cp "$out/human16_7/sharon2005_human16.controller.json" data/sharon2005/human16_walk.controller.json
+  cp "$out/human16_8/sharon2005_human16.controller.json" data/sharon2005/human16_walk.controller.json
   cp "$out/high_knee/sharon2005_high_knee.controller.json" data/sharon2005/high_knee.controller.json
   cp "$(bsc d4)" data/sharon2005/backswing.controller.json
   cp "$out/uphill/sharon2005_uphill.controller.json" data/sharon2005/uphill.controller.json
