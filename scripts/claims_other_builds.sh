@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # The saved walkers' claims under builds other than CI's GCC -O3: a result must not rest on one
-# compiler's rounding. Builds the claim tests (tests/sharon2005/, tests/wang2009/) and runs them
+# compiler's rounding. Builds the claim tests (tests/sharon2005/, tests/wang2009/, tests/wang2012/)
+# and runs them
 #   clang   with Debian's clang (14), Release
 #   fma     with GCC, Release, -ffp-contract=fast -march=x86-64-v3 (fused multiply-adds, AVX2)
 #   scripts/claims_other_builds.sh [clang|fma]...   (default: both)
@@ -29,9 +30,9 @@ for v in "${variants[@]}"; do
   cmake -S . -B "$dir" -G Ninja -DCMAKE_BUILD_TYPE=Release -DGAITSYNTH_BUILD_TESTS=ON \
     -DGAITSYNTH_BUILD_EXAMPLES=OFF -DGAITSYNTH_BUILD_BENCHMARKS=OFF -DGAITSYNTH_USE_MPI=OFF \
     "${flags[@]}" >/dev/null
-  cmake --build "$dir" -j"$jobs" --target test_sharon2005 test_wang2009
+  cmake --build "$dir" -j"$jobs" --target test_sharon2005 test_wang2009 test_wang2012
   echo "== claims, $v build"
-  ctest --test-dir "$dir" -j"$jobs" -R '^(sharon2005|wang2009)/' --output-on-failure \
+  ctest --test-dir "$dir" -j"$jobs" -R '^(sharon2005|wang2009|wang2012)/' --output-on-failure \
     --timeout 1200 || status=1
 done
 exit $status
