@@ -305,7 +305,11 @@ int with_disturbance_training(const Problem& prob,
   std::vector<variant> variants;
   for (const auto& d : training) {
     bodies.push_back(sharon2005_human7(d.body()));
-    rollout_options o = d.apply(prob.options, /*horizon=*/600.0);
+    // Pushes up to the last episode (the rollout checks every listed push at every step).
+    const double last = c.horizons.empty()
+                            ? std::max(c.max_horizon, 60.0)
+                            : *std::max_element(c.horizons.begin(), c.horizons.end());
+    rollout_options o = d.apply(prob.options, last);
     o.initial_state = sharon_scenarios::start_state_for(bodies.back(), target, d.ground());
     variants.push_back(variant{bodies.back(), torque_actuator{}, prob.controller,
                                mass_distance<planar_root>(bodies.back(), target, style_options(c)),
