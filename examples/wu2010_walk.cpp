@@ -14,7 +14,7 @@
 //
 //   wu2010_walk [--iterations N] [--threads N] [--seed K] [--out DIR] [--init FILE]
 //               [--horizon S] [--flat] [--fall-penalty W] [--check-seconds S]
-//               [--controller-rate HZ]
+//               [--controller-rate HZ] [--sigma S]
 //   wu2010_walk --resume DIR [--threads N]
 //   wu2010_walk --replay FILE [--check-seconds S] [--out DIR]
 //
@@ -94,6 +94,7 @@ struct cli {
   double fall_penalty = 100.0;
   double check_seconds = 20.0;
   double controller_rate = 0.0;  // Hz; 0: a command every physics step
+  double sigma = 0.3;            // Sec. 8.3, on the [0, 1] scale
   bool controller_rate_given = false;
   std::string command, out_arg;
   nlohmann::json options;
@@ -134,6 +135,10 @@ cli parse(int argc, char** argv) {
                  "2400 Hz; a saved controller's own rate when replaying; ours, see the file "
                  "comment)")
       ->check(example_cli::in_range(0.0, 2400.0));
+  app.add_option("--sigma", c.sigma,
+                 "CMA-ES step size on [0, 1] (Sec. 8.3: 0.3; smaller to search near an --init "
+                 "controller)")
+      ->check(example_cli::in_range(1e-9, 1.0));
   example_cli::parse(app, argc, argv);
   c.controller_rate_given = app.count("--controller-rate") > 0;
   if (!resume.empty()) {
@@ -358,7 +363,7 @@ int run(const cli& c) {
   std::int64_t evaluations = saved_info.value("evaluations", std::int64_t{0});
   if (c.replay.empty() && c.iterations > 0) {
     cmaes_options co;
-    co.sigma0 = 0.3;  // Sec. 8.3
+    co.sigma0 = c.sigma;  // Sec. 8.3: 0.3
     co.population_size = 32;
     co.seed = c.seed;
     co.stop.max_iterations = c.iterations;

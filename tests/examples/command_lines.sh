@@ -57,6 +57,10 @@ case "$mode" in
         expect 1 "factor for 'GAS' must be finite and > 0, got 0" -- "$exe" --weaken GAS=0 \
           --iterations 0 --horizon 0.01 --check-seconds 0.01 --out "${TMPDIR:-/tmp}/gaitsynth_cli_weaken"
       fi
+      if grep -q -- "--sigma" <<<"$help"; then
+        expect 2 "--sigma: must be in .*, got 0" -- "$exe" --sigma 0
+        expect 2 "--sigma: must be in .*, got nan" -- "$exe" --sigma nan
+      fi
       if grep -q -- "--controller-rate" <<<"$help"; then
         expect 2 "--controller-rate: must be in .*, got -5" -- "$exe" --controller-rate -5
         expect 1 "--controller-rate must be 0 .* or above 2 Hz.*got 1" -- "$exe" --controller-rate 1
