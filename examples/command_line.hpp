@@ -33,6 +33,14 @@
 
 #include "gaitsynth/io/viewer_outputs.hpp"
 
+#ifdef GAITSYNTH_REVISION_LINKED
+namespace gaitsynth_examples {
+/// The source tree's git revision when this program was built ("-dirty": with uncommitted changes
+/// to tracked files); generated at every build by cmake/git_revision.cmake.
+const char* git_revision();
+}  // namespace gaitsynth_examples
+#endif
+
 namespace example_cli {
 
 /// A value read whole by `read` (std::stod, std::stoll) and within [lo, hi]; `kind` names what it
@@ -237,20 +245,12 @@ inline nlohmann::json effective_options(const CLI::App& app) {
   return o;
 }
 
-#ifdef GAITSYNTH_REVISION_LINKED
-namespace gaitsynth_examples {
-/// The source tree's git revision when this program was built ("-dirty": with uncommitted changes
-/// to tracked files); generated at every build by cmake/git_revision.cmake.
-const char* git_revision();
-}  // namespace gaitsynth_examples
-#endif
-
 /// The build this program came from: compiler, flags, git revision (at build time; a program
 /// compiled outside CMake has none).
 inline nlohmann::json build_info() {
   nlohmann::json b;
 #ifdef GAITSYNTH_REVISION_LINKED
-  b["git_revision"] = gaitsynth_examples::git_revision();
+  b["git_revision"] = ::gaitsynth_examples::git_revision();
 #endif
 #ifdef GAITSYNTH_BUILD_FLAGS
   b["flags"] = GAITSYNTH_BUILD_FLAGS;

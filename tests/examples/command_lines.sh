@@ -3,6 +3,9 @@
 #   command_lines.sh bad_values EXE...   each example refuses a bad value of each kind with a
 #                                        message naming the flag and the value, and exit status 2;
 #                                        --help exits 0 and lists the flags with their defaults
+#   command_lines.sh revision EXE SOURCE_DIR DIR FLAGS...
+#                                        EXE FLAGS --out DIR writes options.json whose
+#                                        build.git_revision is SOURCE_DIR's HEAD (at build time)
 #   command_lines.sh resume EXE DIR STEM WAIT_FOR FLAGS... -- OTHER_FLAGS...
 #                                        EXE killed (SIGKILL) after its first checkpoint, then 3
 #                                        times at seeded random moments while resuming, and
@@ -135,6 +138,25 @@ case "$mode" in
     # --resume takes the recorded options; others are refused, a missing folder is named.
     expect 1 "cannot be given with it" -- "$exe" --resume "$dir/cut" --check-seconds 3
     expect 1 "no run folder" -- "$exe" --resume "$dir/none"
+    ;;
+  revision)
+    exe=$1 src=$2 dir=$3
+    shift 3
+    rm -rf "$dir"
+    if ! command -v git >/dev/null || ! head=$(git -C "$src" rev-parse --short=12 HEAD 2>/dev/null); then
+      echo "ok: no git or no repository at $src: nothing to compare"
+    elif ! "$exe" "$@" --out "$dir" >/dev/null 2>&1; then
+      echo "FAIL: $(basename "$exe") $* --out $dir failed"; fail=1
+    else
+      rev=$(python3 -c 'import json,sys; print(json.load(open(sys.argv[1]))["build"]["git_revision"])' \
+        "$dir/options.json")
+      # -dirty: the tree had uncommitted changes when the program was built.
+      if [[ "$rev" == "$head" || "$rev" == "$head-dirty" ]]; then
+        echo "ok: options.json records revision $rev"
+      else
+        echo "FAIL: options.json records revision '$rev', the source tree is at $head"; fail=1
+      fi
+    fi
     ;;
   *) echo "unknown mode $mode"; exit 2 ;;
 esac
