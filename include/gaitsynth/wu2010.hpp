@@ -13,6 +13,7 @@
 #include "gaitsynth/controllers/end_effector/half_cycle_plan.hpp"
 #include "gaitsynth/controllers/end_effector/height_hull.hpp"
 #include "gaitsynth/controllers/end_effector/lower_level.hpp"
+#include "gaitsynth/controllers/end_effector/null_space_damper.hpp"
 #include "gaitsynth/controllers/end_effector/null_space_knee.hpp"
 #include "gaitsynth/controllers/end_effector/path_curves.hpp"
 #include "gaitsynth/controllers/end_effector/pd_forces.hpp"

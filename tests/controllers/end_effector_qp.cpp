@@ -1,12 +1,13 @@
 // Wu & Popovic 2010, eq. 5 and Sec. 6.3 (controllers/end_effector/force_qp.hpp): the QP solved
 // per tick satisfies its KKT conditions, gives the same forces as eq. 5 written as the paper
 // does (3K unknowns, Z^T f = 0), agrees with Eigen's least squares when no bound is active,
-// drops exactly the pinned frames' rows, and appendix B's canceling QP leaves only the part of
-// the knee torque that J^T f cannot produce.
+// drops exactly the pinned frames' rows, appendix B's canceling QP leaves only the part of the
+// knee torque that J^T f cannot produce, and the null-space spring-damper accelerates only null(J).
 #include <catch2/catch.hpp>
 #include <random>
 
 #include "gaitsynth/controllers/end_effector/lower_level.hpp"
+#include "gaitsynth/dynamics/crba.hpp"
 #include "gaitsynth/models/wu2010.hpp"
 #include "gaitsynth/qp/kkt.hpp"
 #include "support/dynamics_support.hpp"
@@ -21,15 +22,16 @@ struct fixture {
   end_effector_layout L = biped_end_effector_layout(m);
   lower_level_workspace<floating_root> ws = make_lower_level_workspace(m, L);
   force_qp_options opt;
+  Eigen::VectorXd q, v;
 
   /// A bent-knee pose with random velocities, random ideal wrenches in b.
   void setup(std::mt19937& rng, double wrench_scale) {
-    Eigen::VectorXd q = Eigen::VectorXd::Zero(m.nq());
+    q = Eigen::VectorXd::Zero(m.nq());
     q[3] = 1.0;
     q.tail(17) = gaitsynth::testing::random_vector(rng, 17, 0.3);
     q[7 + m.dof_index("lknee")] = 0.5;
     q[7 + m.dof_index("rknee")] = 0.7;
-    const Eigen::VectorXd v = gaitsynth::testing::random_vector(rng, m.nv(), 0.5);
+    v = gaitsynth::testing::random_vector(rng, m.nv(), 0.5);
     forward_kinematics(m, ws.dyn, q, v);
     read_frame_states(m, ws.dyn, L, ws.current);
     pair_jacobian(m, ws.dyn, q, L, ws.J);
@@ -176,4 +178,49 @@ TEST_CASE("appendix B: the canceling QP removes what J^T f can produce (eq. 12)"
   // Zero tau_theta: nothing to cancel.
   REQUIRE(solve_canceling_qp(Eigen::VectorXd::Zero(17), fx.opt, fx.ws.qp) == qp_status::optimal);
   CHECK(fx.ws.qp.tau_extra.isZero(0.0));
+}
+
+TEST_CASE("the null-space spring-damper accelerates only null(J), as a unit mass",
+          "[controllers][end_effector][qp]") {
+  fixture fx;
+  std::mt19937 rng(13);
+  fx.setup(rng, 100.0);
+  const Eigen::MatrixXd M = crba(fx.m, fx.ws.dyn, fx.q);
+  const double kp = 900.0, kd = 60.0;
+  // Joint accelerations of a torque alone (gravity and velocity terms aside): M a = [0; tau],
+  // solved by an LDLT of the whole M, not by the Schur complement the damper uses.
+  auto joint_accel = [&](const Eigen::VectorXd& q_j, const Eigen::VectorXd& v_j) {
+    const Eigen::VectorXd& tau = null_space_spring_damper(fx.ws.J, M, q_j, v_j, kp, kd,
+                                                          fx.opt.rank_tolerance, fx.ws.null_space);
+    Eigen::VectorXd rhs = Eigen::VectorXd::Zero(fx.m.nv());
+    rhs.tail(17) = tau;
+    return Eigen::VectorXd(M.ldlt().solve(rhs).tail(17));
+  };
+  const Eigen::VectorXd q_j = fx.q.tail(17), v_j = fx.v.tail(17);
+  const Eigen::VectorXd a = joint_accel(q_j, v_j);
+  // null(J) from an SVD (independent of the damper's QR).
+  Eigen::JacobiSVD<Eigen::MatrixXd> svd(fx.ws.J, Eigen::ComputeFullV);
+  const Eigen::MatrixXd N = svd.matrixV().rightCols(5);
+  CHECK(fx.ws.null_space.rank == 12);
+  CHECK_THAT(a, is_approx(Eigen::VectorXd(N * (N.transpose() * (-kp * q_j - kd * v_j))), 1e-9));
+  CHECK(a.norm() > 10.0);
+  CHECK((fx.ws.J * a).norm() < 1e-9 * a.norm());  // moves no frame
+  // As a function of v it is -kd N N^T: every null-space mode a unit mass with damping kd, so
+  // the explicit step is stable for h kd < 2 whatever the inertia. The torque -kd N N^T v without
+  // the inertia (an earlier design, null_space_damper.hpp) would, at this state, accelerate the
+  // foot's roll by ~5800 rad/s^2 per rad/s of roll rate: h times that is above 2 at 2400 Hz,
+  // where the explicit step reverses the roll rate every step and grows.
+  Eigen::MatrixXd G(17, 17);
+  for (int i = 0; i < 17; ++i) G.col(i) = joint_accel(q_j, v_j + Eigen::VectorXd::Unit(17, i)) - a;
+  CHECK_THAT(G, is_approx(Eigen::MatrixXd(-kd * N * N.transpose()), 1e-8));
+  const Eigen::Index roll = fx.m.dof_index("lankle_x");
+  const Eigen::MatrixXd Minv_jj = M.inverse().bottomRightCorner(17, 17);
+  const Eigen::VectorXd euclidean = Minv_jj * (-kd * N * N.transpose()).col(roll);
+  const double h = 1.0 / 2400.0;
+  CHECK(h * std::abs(euclidean[roll]) > 2.0);  // measured 2.4
+  CHECK(h * std::abs(G(roll, roll)) < 0.01);   // measured 0.0023
+  // Bad sizes throw, naming them.
+  CHECK_THROWS_WITH(
+      null_space_spring_damper(fx.ws.J, M, q_j.head(16), v_j, kp, kd, 1e-10, fx.ws.null_space),
+      Catch::Contains("16"));
 }

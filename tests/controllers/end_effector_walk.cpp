@@ -24,6 +24,7 @@
 #include "gaitsynth/objectives/distance.hpp"
 #include "gaitsynth/rollout/rollout.hpp"
 #include "gaitsynth/synthesis/wu2010_search_space.hpp"
+#include "support/joint_rate_chatter.hpp"
 
 using namespace gaitsynth;
 
@@ -58,9 +59,11 @@ struct walk_log {
   double min_com_z = std::numeric_limits<double>::infinity();
   bool finite = true;
   std::int64_t qp_failures = 0;
+  gaitsynth::testing::joint_rate_chatter chatter;
   template <class Ob>
   void observe(const Ob& ob) {
     const auto& st = *ob.controller_state_ptr;
+    chatter.add(ob.t, ob.v_ptr->tail(ob.v_ptr->size() - 6));
     if (ob.step == 0) start_com = ob.com;
     last_com = ob.com;
     min_com_z = std::min(min_com_z, ob.com.z());
@@ -314,13 +317,17 @@ TEST_CASE("planned_walk: the default (unoptimized) parameters on the Table 3 bip
        << " m (start " << log.start_com.z() << "); QP failures " << log.qp_failures);
   // Not a walk: the defaults are a neutral plan (no balance feedback, no bias, the upper body
   // planned midway between the feet), not optimized parameters. Measured: the first step (the
-  // right foot 0.65 m ahead from standing) lags its path (lands near x = 0.43 against 0.59 planned
-  // at t_h), the upper body lags its target and drifts to the swing side, and the biped falls to
-  // the right at t = 1.235 s, early in the third half-cycle, having moved 0.28 m forward; eq. 5's
-  // QP never fails. What this test guards: the schedule runs, nothing diverges or goes NaN.
+  // right foot 0.65 m ahead from standing) lags its path, the upper body lags its target and
+  // drifts to the swing side, and the biped falls to the right at t = 1.32 s, early in the third
+  // half-cycle, its COM 0.33 m forward; eq. 5's QP never fails. What this test guards: the
+  // schedule runs, nothing diverges or goes NaN, no joint chatters.
   CHECK_FALSE(r.diverged());
   CHECK(log.finite);
   CHECK(std::isfinite(r.cost));
   CHECK(log.plans.size() >= 2);
   CHECK(log.qp_failures == 0);
+  // No joint rate reverses its change step after step (measured: runs of 11 steps at most; with
+  // the null-space damper sent through appendix B's bounded canceling QP, the earlier design,
+  // the swing ankle's roll alternated for 1569 steps before the fall: null_space_damper.hpp).
+  CHECK(log.chatter.longest_alternation < 40);
 }

@@ -4,7 +4,8 @@
 /// (q, v), the contacts and the end-effector links' targets to joint torques,
 ///
 ///   frames (Sec. 5) -> ideal PD wrenches (eqs. 1-3) -> J (Sec. 6.1) -> pinned frames (Sec. 6.3)
-///   -> eq. 5's QP -> tau = J^T f + (tau_theta + J^T f_theta) (appendix B, eq. 12).
+///   -> eq. 5's QP -> tau = J^T f + (tau_theta + J^T f_theta) (appendix B, eq. 12)
+///   + S N N^T (-kp q - kd v) (ours: null_space_damper.hpp).
 ///
 /// The workspace is sized once (make_lower_level_workspace); a tick allocates nothing. The planner
 /// (Sec. 4, later) and the standing controller (standing_balance.hpp) call it with their targets.
@@ -16,8 +17,10 @@
 #include "gaitsynth/controllers/end_effector/force_qp.hpp"
 #include "gaitsynth/controllers/end_effector/frames.hpp"
 #include "gaitsynth/controllers/end_effector/generalized_forces.hpp"
+#include "gaitsynth/controllers/end_effector/null_space_damper.hpp"
 #include "gaitsynth/controllers/end_effector/null_space_knee.hpp"
 #include "gaitsynth/controllers/end_effector/pd_forces.hpp"
+#include "gaitsynth/dynamics/crba.hpp"
 #include "gaitsynth/dynamics/kinematics.hpp"
 #include "gaitsynth/dynamics/workspace.hpp"
 #include "gaitsynth/error.hpp"
@@ -29,14 +32,13 @@ struct lower_level_options {
   double eps_p = 0.2;        ///< Sec. 6.3: pinned only within this distance of the target (m)
   double eps_pdot = 0.05;    ///< Sec. 6.3: and when the target moves slower than this (m/s)
   bool knee_control = true;  ///< appendix B
-  /// Ours, not the paper's: a joint-space spring and damper toward the zero joint angles, sent
-  /// through appendix B's canceling QP with the knee torque, so only its part in null(J) acts.
-  /// J^T f reaches 12 of the 17 joint DOFs of the Table 3 biped; the other 5 (the pelvis rolling
-  /// about the hip axis, whose COM sits on that axis, and each knee swiveling about the hip-ankle
-  /// line) move no frame, get no torque from eq. 5 and would drift without it. The paper does not
-  /// say what holds them in PhysX. N m/rad and N m s/rad; 0 and 0 switch it off.
-  double null_space_kp = 500.0;
-  double null_space_kd = 20.0;
+  /// Ours, not the paper's: a spring and damper toward the zero joint angles on the joint motions
+  /// that move no frame, null(J) (null_space_damper.hpp): it holds the 5 of the Table 3 biped's 17
+  /// joint DOFs that eq. 5 does not reach. As accelerations, 1/s^2 and 1/s: each null-space mode
+  /// is a unit mass, here critically damped at 30 rad/s (h kd = 0.025 at 2400 Hz, 0.94 at 64 Hz,
+  /// below the explicit step's limit of 2). 0 and 0 switch it off.
+  double null_space_kp = 900.0;
+  double null_space_kd = 60.0;
 };
 
 template <root_joint Root>
@@ -50,6 +52,7 @@ struct lower_level_workspace {
   Eigen::VectorXd tau_theta;          ///< nj, appendix B's knee torques
   Eigen::VectorXd tau;                ///< nj, the output
   force_qp_workspace qp;
+  null_space_workspace null_space;
 };
 
 template <root_joint Root>
@@ -77,6 +80,7 @@ lower_level_workspace<Root> make_lower_level_workspace(const model<Root>& m,
   ws.tau_theta.setZero(nj);
   ws.tau.setZero(nj);
   ws.qp = force_qp_workspace(L.num_pairs(), L.num_action(), nj);
+  ws.null_space = null_space_workspace(3 * L.num_pairs(), nj, Root::nv);
   return ws;
 }
 
@@ -110,8 +114,8 @@ inline void pinned_frames(const end_effector_layout& L, const frame_states& curr
 }
 
 /// One tick. `touching` has one flag per contact point of the model (sensors::contact_active).
-/// Returns ws.tau (nj): J^T f plus eq. 12's null-space knee term. When the QP fails (a status in
-/// ws.qp.status, never NaN) the torques are zero.
+/// Returns ws.tau (nj): J^T f plus eq. 12's null-space knee term plus the null-space spring-damper.
+/// When the QP fails (a status in ws.qp.status, never NaN) J^T f is zero.
 template <root_joint Root>
 const Eigen::VectorXd& lower_level_torques(
     const model<Root>& m, const end_effector_layout& L, const end_effector_gains& g,
@@ -136,12 +140,13 @@ const Eigen::VectorXd& lower_level_torques(
   ws.tau_theta.setZero();
   if (opt.knee_control && g.rho > 0.0)
     knee_bending_torques(m, ws.dyn, q, L, ws.current, ws.desired, g.rho, ws.tau_theta);
-  const int nj = m.num_joint_dofs();
-  if (opt.null_space_kp > 0.0 || opt.null_space_kd > 0.0) {
-    ws.tau_theta -= opt.null_space_kp * q.tail(nj) + opt.null_space_kd * v.tail(nj);
-  }
   solve_canceling_qp(ws.tau_theta, opt.qp, ws.qp);  // eq. 12's bracket
   ws.tau += ws.qp.tau_extra;
+  const int nj = m.num_joint_dofs();
+  if (opt.null_space_kp > 0.0 || opt.null_space_kd > 0.0)
+    ws.tau += null_space_spring_damper(ws.J, crba(m, ws.dyn, q), q.tail(nj), v.tail(nj),
+                                       opt.null_space_kp, opt.null_space_kd, opt.qp.rank_tolerance,
+                                       ws.null_space);
   return ws.tau;
 }
 
