@@ -190,8 +190,8 @@ TEST_CASE("the null-space spring-damper accelerates only null(J), as a unit mass
   // Joint accelerations of a torque alone (gravity and velocity terms aside): M a = [0; tau],
   // solved by an LDLT of the whole M, not by the Schur complement the damper uses.
   auto joint_accel = [&](const Eigen::VectorXd& q_j, const Eigen::VectorXd& v_j) {
-    const Eigen::VectorXd& tau = null_space_spring_damper(fx.ws.J, M, q_j, v_j, kp, kd,
-                                                          fx.opt.rank_tolerance, fx.ws.null_space);
+    const Eigen::VectorXd& tau = null_space_spring_damper(fx.ws.qp.JtU.leftCols(fx.ws.qp.rank), M,
+                                                          q_j, v_j, kp, kd, fx.ws.null_space);
     Eigen::VectorXd rhs = Eigen::VectorXd::Zero(fx.m.nv());
     rhs.tail(17) = tau;
     return Eigen::VectorXd(M.ldlt().solve(rhs).tail(17));
@@ -201,7 +201,7 @@ TEST_CASE("the null-space spring-damper accelerates only null(J), as a unit mass
   // null(J) from an SVD (independent of the damper's QR).
   Eigen::JacobiSVD<Eigen::MatrixXd> svd(fx.ws.J, Eigen::ComputeFullV);
   const Eigen::MatrixXd N = svd.matrixV().rightCols(5);
-  CHECK(fx.ws.null_space.rank == 12);
+  CHECK(fx.ws.qp.rank == 12);
   CHECK_THAT(a, is_approx(Eigen::VectorXd(N * (N.transpose() * (-kp * q_j - kd * v_j))), 1e-9));
   CHECK(a.norm() > 10.0);
   CHECK((fx.ws.J * a).norm() < 1e-9 * a.norm());  // moves no frame
@@ -220,7 +220,7 @@ TEST_CASE("the null-space spring-damper accelerates only null(J), as a unit mass
   CHECK(h * std::abs(euclidean[roll]) > 2.0);  // measured 2.4
   CHECK(h * std::abs(G(roll, roll)) < 0.01);   // measured 0.0023
   // Bad sizes throw, naming them.
-  CHECK_THROWS_WITH(
-      null_space_spring_damper(fx.ws.J, M, q_j.head(16), v_j, kp, kd, 1e-10, fx.ws.null_space),
-      Catch::Contains("16"));
+  CHECK_THROWS_WITH(null_space_spring_damper(fx.ws.qp.JtU.leftCols(12), M, q_j.head(16), v_j, kp,
+                                             kd, fx.ws.null_space),
+                    Catch::Contains("16"));
 }

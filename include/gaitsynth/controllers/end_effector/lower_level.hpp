@@ -80,7 +80,7 @@ lower_level_workspace<Root> make_lower_level_workspace(const model<Root>& m,
   ws.tau_theta.setZero(nj);
   ws.tau.setZero(nj);
   ws.qp = force_qp_workspace(L.num_pairs(), L.num_action(), nj);
-  ws.null_space = null_space_workspace(3 * L.num_pairs(), nj, Root::nv);
+  ws.null_space = null_space_workspace(nj, Root::nv, ws.qp.n);
   return ws;
 }
 
@@ -144,9 +144,9 @@ const Eigen::VectorXd& lower_level_torques(
   ws.tau += ws.qp.tau_extra;
   const int nj = m.num_joint_dofs();
   if (opt.null_space_kp > 0.0 || opt.null_space_kd > 0.0)
-    ws.tau += null_space_spring_damper(ws.J, crba(m, ws.dyn, q), q.tail(nj), v.tail(nj),
-                                       opt.null_space_kp, opt.null_space_kd, opt.qp.rank_tolerance,
-                                       ws.null_space);
+    ws.tau +=
+        null_space_spring_damper(ws.qp.JtU.leftCols(ws.qp.rank), crba(m, ws.dyn, q), q.tail(nj),
+                                 v.tail(nj), opt.null_space_kp, opt.null_space_kd, ws.null_space);
   return ws.tau;
 }
 

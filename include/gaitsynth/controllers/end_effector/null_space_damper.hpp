@@ -7,7 +7,7 @@
 /// the hip-ankle line) get no torque from eq. 5 and would drift. The paper does not say what holds
 /// them in PhysX. We ask for the joint accelerations
 ///
-///   ddq_n = P (-kp q - kd v),   P = N N^T, N an orthonormal basis of null(J) (nj x (nj - rank J)),
+///   ddq_n = P (-kp q - kd v),   P the orthogonal projector on null(J),
 ///
 /// (q, v the joint angles and rates; kp in 1/s^2, kd in 1/s) and produce them with the torque
 ///
@@ -28,7 +28,6 @@
 /// components still spin a light swing foot: the swing ankle's roll and yaw diverged the same way.
 #include <Eigen/Cholesky>
 #include <Eigen/Core>
-#include <Eigen/QR>
 
 #include "gaitsynth/error.hpp"
 
@@ -36,63 +35,58 @@ namespace gaitsynth {
 
 /// Scratch for null_space_spring_damper, sized once (no allocation per tick).
 struct null_space_workspace {
-  Eigen::ColPivHouseholderQR<Eigen::MatrixXd> qr;  ///< of J^T (nj x K3)
-  Eigen::MatrixXd Q;                               ///< nj x nj: [range(J^T) | null(J)]
-  Eigen::LLT<Eigen::MatrixXd> root_llt;            ///< of M_rr (nr x nr)
-  Eigen::MatrixXd Mrr, Mrj_solved, S;              ///< nr x nr, nr x nj (M_rr^-1 M_rj), nj x nj
-  Eigen::VectorXd hh_work, accel, coords, tau;     ///< nj each
-  Eigen::Index rank = 0;
+  Eigen::MatrixXd gram;                ///< n x n (top-left rank x rank used): V^T V
+  Eigen::MatrixXd Mrr, Mrj_solved, S;  ///< nr x nr, nr x nj (M_rr^-1 M_rj), nj x nj
+  Eigen::VectorXd accel, coords, tau;  ///< nj, n, nj
 
   null_space_workspace() = default;
-  /// For a J of K3 rows, nj joint DOFs and a root of nr velocity DOFs.
-  null_space_workspace(Eigen::Index K3, Eigen::Index nj, Eigen::Index nr)
-      : qr(nj, K3),
-        Q(Eigen::MatrixXd::Identity(nj, nj)),
-        root_llt(nr),
+  /// For nj joint DOFs, a root of nr velocity DOFs and a range basis of up to n columns.
+  null_space_workspace(Eigen::Index nj, Eigen::Index nr, Eigen::Index n)
+      : gram(Eigen::MatrixXd::Zero(n, n)),
         Mrr(Eigen::MatrixXd::Identity(nr, nr)),
         Mrj_solved(Eigen::MatrixXd::Zero(nr, nj)),
         S(Eigen::MatrixXd::Zero(nj, nj)),
-        hh_work(Eigen::VectorXd::Zero(nj)),
         accel(Eigen::VectorXd::Zero(nj)),
-        coords(Eigen::VectorXd::Zero(nj)),
+        coords(Eigen::VectorXd::Zero(n)),
         tau(Eigen::VectorXd::Zero(nj)) {}
 };
 
-/// tau_n = S P (-kp q_j - kd v_j) (file comment) from J (K3 x nj), the joint-space inertia M
-/// (nv x nv, the root's nr = nv - nj DOFs first), the joint angles q_j and rates v_j (nj each).
-/// `rank_tolerance` is the relative pivot below which J^T's QR counts a column dependent
-/// (force_qp_options::rank_tolerance). Returns a reference into ws (ws.tau); ws.accel holds ddq_n.
+/// tau_n = S P (-kp q_j - kd v_j) (file comment). V (nj x rank) spans range(J^T), the joint
+/// torques J^T f can make: force_qp_workspace's J^T U, its first `rank` columns (its QR of J
+/// decides the rank, as for eq. 5), so P = I - V (V^T V)^-1 V^T. M is the joint-space inertia
+/// (nv x nv, the root's nr = nv - nj DOFs first); q_j, v_j the joint angles and rates. Returns a
+/// reference into ws (ws.tau); ws.accel holds the accelerations P (-kp q_j - kd v_j).
 /// \throws std::invalid_argument for sizes that do not match the workspace.
-inline const Eigen::VectorXd& null_space_spring_damper(const Eigen::Ref<const Eigen::MatrixXd>& J,
+inline const Eigen::VectorXd& null_space_spring_damper(const Eigen::Ref<const Eigen::MatrixXd>& V,
                                                        const Eigen::Ref<const Eigen::MatrixXd>& M,
                                                        const Eigen::Ref<const Eigen::VectorXd>& q_j,
                                                        const Eigen::Ref<const Eigen::VectorXd>& v_j,
-                                                       double kp, double kd, double rank_tolerance,
+                                                       double kp, double kd,
                                                        null_space_workspace& ws) {
-  const Eigen::Index nj = J.cols(), nr = ws.Mrr.rows();
-  check_argument(ws.Q.rows() == nj && ws.qr.cols() == J.rows() && M.rows() == nr + nj &&
+  const Eigen::Index nj = ws.S.rows(), nr = ws.Mrr.rows(), r = V.cols();
+  check_argument(V.rows() == nj && r <= ws.gram.rows() && M.rows() == nr + nj &&
                      M.cols() == nr + nj && q_j.size() == nj && v_j.size() == nj,
-                 "null_space_spring_damper: J is ", J.rows(), " x ", nj, ", M ", M.rows(), " x ",
+                 "null_space_spring_damper: V is ", V.rows(), " x ", r, ", M ", M.rows(), " x ",
                  M.cols(), ", q and v have ", q_j.size(), " and ", v_j.size(),
-                 " entries; the workspace is for a ", ws.qr.cols(), " x ", ws.Q.rows(), " J and ",
-                 nr, " root DOFs");
-  ws.qr.setThreshold(rank_tolerance);
-  ws.qr.compute(J.transpose());
-  ws.rank = ws.qr.rank();
-  ws.qr.householderQ().evalTo(ws.Q, ws.hh_work);
-  const Eigen::Index n_null = nj - ws.rank;
+                 " entries; the workspace is for ", nj, " joint DOFs, ", nr,
+                 " root DOFs and up to ", ws.gram.rows(), " columns");
   ws.accel = -kp * q_j - kd * v_j;
-  auto N = ws.Q.rightCols(n_null);
-  auto c = ws.coords.head(n_null);
-  c.noalias() = N.transpose() * ws.accel;
-  ws.accel.noalias() = N * c;
+  if (r > 0) {  // accel -= V (V^T V)^-1 V^T accel, the Cholesky factor in place (no allocation)
+    auto G = ws.gram.topLeftCorner(r, r);
+    G.noalias() = V.transpose() * V;
+    Eigen::LLT<Eigen::Ref<Eigen::MatrixXd>> llt(G);
+    auto c = ws.coords.head(r);
+    c.noalias() = V.transpose() * ws.accel;
+    llt.solveInPlace(c);
+    ws.accel.noalias() -= V * c;
+  }
   // S = M_jj - M_jr M_rr^-1 M_rj
   ws.S = M.bottomRightCorner(nj, nj);
   if (nr > 0) {
     ws.Mrr = M.topLeftCorner(nr, nr);
-    ws.root_llt.compute(ws.Mrr);
+    Eigen::LLT<Eigen::Ref<Eigen::MatrixXd>> root(ws.Mrr);
     ws.Mrj_solved = M.topRightCorner(nr, nj);
-    ws.root_llt.solveInPlace(ws.Mrj_solved);
+    root.solveInPlace(ws.Mrj_solved);
     ws.S.noalias() -= M.bottomLeftCorner(nj, nr) * ws.Mrj_solved;
   }
   ws.tau.noalias() = ws.S * ws.accel;
