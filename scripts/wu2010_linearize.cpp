@@ -3,7 +3,8 @@
 // helper force on flat ground (2400 Hz, a command every step) up to each requested time, takes
 // the state, the link targets and the contact flags of that command, and differentiates the
 // lower level's torque by central differences in v (D = d tau / d v) and in the joint angles
-// (K = d tau / d q). Prints, per time, the pinned frames, the eigenvalues of the explicit step
+// (K = d tau / d q). Prints, per time, the pinned frames with Sec. 6.3's test for each (touching,
+// distance to its target, the target's speed), the eigenvalues of the explicit step
 //
 //   v+ = v + h M^-1 [0; D] v                          (rates only: a value below -1 is a chatter)
 //   (q+, v+) from semi-implicit Euler with K and D    (a value above 1 a divergence)
@@ -121,6 +122,18 @@ int main(int argc, char** argv) try {
     std::printf("t = %.4f s, pinned frames:", snap.t);
     for (const unsigned char p : ws.pinned) std::printf("%d", p);
     std::printf("\n");
+    // Sec. 6.3's test per action frame: touching, distance to the target, the target's speed.
+    for (int f = 0; f < c.layout().num_action(); ++f) {
+      bool touching = false;
+      for (const int k : c.layout().action[static_cast<std::size_t>(f)].contacts)
+        touching = touching || snap.touching[static_cast<std::size_t>(k)] != 0;
+      std::printf("  %-15s touching %d, |target - p| %.3f m, target speed %.3f m/s\n",
+                  c.layout().action[static_cast<std::size_t>(f)].name.c_str(), touching ? 1 : 0,
+                  (ws.desired.position[static_cast<std::size_t>(f)] -
+                   ws.current.position[static_cast<std::size_t>(f)])
+                      .norm(),
+                  ws.desired.velocity[static_cast<std::size_t>(f)].norm());
+    }
     Eigen::MatrixXd D(nj, nv), D5(nj, nv), K(nj, nj);
     for (int i = 0; i < nv; ++i) {
       const double e = 1e-6;
