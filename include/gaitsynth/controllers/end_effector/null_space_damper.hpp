@@ -19,13 +19,14 @@
 /// to eq. 5, and each null-space mode is a unit-mass spring-damper whatever its inertia: the
 /// explicit step is stable while h kd < 2 (h the time between commands).
 ///
-/// Why not the simpler designs (docs/reproductions/wu2010.md, "the ankle chatter"). (1) An earlier
-/// version sent -kp q - kd v (N m/rad, N m s/rad) through appendix B's canceling QP with the knee
-/// torque; its force bound saturates when the spring is stretched, and then the whole damper leaks
-/// onto every joint: on the foot's roll (ankle_x, M^-1 entry ~630 / kg m^2) kd = 20 N m s/rad at
-/// 2400 Hz gives h kd M^-1 = 5.3 > 2, and the explicit step reverses the foot's roll rate every
-/// step, growing. (2) The torque P (-kp q - kd v) without S stays in null(J) but its ankle
-/// components still spin a light swing foot: the swing ankle's roll and yaw diverged the same way.
+/// Why not the simpler designs (docs/reproductions/wu2010.md, "Why it does not walk"). (1) An
+/// earlier version sent -kp q - kd v (N m/rad, N m s/rad) through appendix B's canceling QP with
+/// the knee torque; its force bound saturates when the spring is stretched, and then the whole
+/// damper leaks onto every joint: on the foot's roll (ankle_x, M^-1 entry ~630 / kg m^2) kd = 20 N
+/// m s/rad at 2400 Hz gives h kd M^-1 = 5.3 > 2, and the explicit step reverses the foot's roll
+/// rate every step, growing. (2) The torque P (-kp q - kd v) without S stays in null(J) but its
+/// ankle components still spin a light swing foot: the swing ankle's roll and yaw diverged the same
+/// way.
 #include <Eigen/Cholesky>
 #include <Eigen/Core>
 
