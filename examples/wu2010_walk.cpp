@@ -14,15 +14,24 @@
 //
 //   wu2010_walk [--iterations N] [--threads N] [--seed K] [--out DIR] [--init FILE]
 //               [--horizon S] [--flat] [--fall-penalty W] [--check-seconds S]
-//               [--controller-rate HZ] [--sigma S]
+//               [--controller-rate HZ] [--sigma S] [--cost-timestep S]
+//               [--stance-target planned_landing|touchdown]
 //   wu2010_walk --resume DIR [--threads N]
 //   wu2010_walk --replay FILE [--check-seconds S] [--out DIR]
 //
 // Fall guard (ours; the paper's cost has no fall term): a fall ends the rollout early (the
 // rollout's terrain-aware fall test, COM below half its initial height above the terrain under
-// it), which would lower every sum of eq. 6, so each physics step of the horizon left unsimulated
-// costs --fall-penalty (default 100, in eq. 6's units: its sums run over physics steps, and no
-// step of a walk costs that much: the helper penalty at h_max = 1000 N is 5 per step).
+// it), which would lower every sum of eq. 6, so each timestep of eq. 6 (--cost-timestep) of the
+// horizon left unsimulated costs --fall-penalty (default 100, in eq. 6's units; no timestep of a
+// walk costs that much: the helper penalty at h_max = 1000 N is 5 per timestep).
+//
+// Eq. 6's timestep (--cost-timestep, default 1/64 s, the paper's: objectives/wu2010/common.hpp):
+// the per-timestep terms weight each physics step by dt / timestep; 0 counts physics steps (the
+// runs f1 and f2 of data/wu2010/ did, 37.5 times the paper's weight against the COM term; a
+// --resume of a run that did not record this option keeps 0).
+//
+// Stance target (--stance-target, ours; default the paper's planned_landing): touchdown re-targets
+// the stance foot to where it landed (planned_walk_options::stance_target).
 // wang2009::failure is not used: its per-step test is the COM below a fixed height above a fixed
 // ground height, which the 0-0.2 m height fields shift.
 //
@@ -96,6 +105,9 @@ struct cli {
   double controller_rate = 0.0;  // Hz; 0: a command every physics step
   double sigma = 0.3;            // Sec. 8.3, on the [0, 1] scale
   bool controller_rate_given = false;
+  std::string stance_target = "planned_landing";  // planned_walk_options::stance_target
+  double cost_timestep = wu2010::paper_timestep;  // s; 0: eq. 6 summed per physics step
+  bool stance_target_given = false;
   std::string command, out_arg;
   nlohmann::json options;
 };
@@ -126,7 +138,8 @@ cli parse(int argc, char** argv) {
       ->check(example_cli::in_range(0.01, 1000.0));
   app.add_flag("--flat", c.flat, "optimize on flat ground instead of random height fields");
   app.add_option("--fall-penalty", c.fall_penalty,
-                 "cost per physics step of the horizon left unsimulated by a fall (ours)")
+                 "cost per timestep of eq. 6 (--cost-timestep) of the horizon left unsimulated "
+                 "by a fall (ours)")
       ->check(example_cli::in_range(0.0, 1e12));
   app.add_option("--check-seconds", c.check_seconds, "length of each check rollout, s")
       ->check(example_cli::in_range(0.01, 10000.0));
@@ -139,10 +152,23 @@ cli parse(int argc, char** argv) {
                  "CMA-ES step size on [0, 1] (Sec. 8.3: 0.3; smaller to search near an --init "
                  "controller)")
       ->check(example_cli::in_range(1e-9, 1.0));
+  app.add_option("--stance-target", c.stance_target,
+                 "the stance foot's stationary target: planned_landing (the paper, Fig. 5) or "
+                 "touchdown (ours: where it landed; a saved controller's own when replaying)")
+      ->check(CLI::IsMember({"planned_landing", "touchdown"}));
+  app.add_option("--cost-timestep", c.cost_timestep,
+                 "eq. 6's timestep, s: each physics step counts dt / this (the paper's 64 Hz "
+                 "step); 0: each physics step counts once")
+      ->check(example_cli::in_range(0.0, 1.0));
   example_cli::parse(app, argc, argv);
   c.controller_rate_given = app.count("--controller-rate") > 0;
+  c.stance_target_given = app.count("--stance-target") > 0;
   if (!resume.empty()) {
     example_cli::reparse_recorded(app, argv[0], resume, {"threads"});
+    // Runs from before --cost-timestep existed summed eq. 6 per physics step.
+    const auto recorded = example_cli::recorded_arguments(resume, {});
+    if (std::find(recorded.begin(), recorded.end(), "--cost-timestep") == recorded.end())
+      c.cost_timestep = 0.0;
     out = resume;
     c.resume = true;
   }
@@ -157,10 +183,12 @@ cli parse(int argc, char** argv) {
   return c;
 }
 
-/// The fall guard (ours, see the file comment): `weight` per physics step of the requested horizon
-/// that a rollout stopped early (a fall) did not simulate; 0 for a rollout that reached it.
+/// The fall guard (ours, see the file comment): `weight` per timestep (each physics step counts
+/// dt / timestep, 1 with timestep 0) of the requested horizon that a rollout stopped early (a
+/// fall) did not simulate; 0 for a rollout that reached it.
 class unfinished_steps {
  public:
+  explicit unfinished_steps(double timestep = 0.0) : timestep_(timestep) {}
   struct accumulator_type {
     std::int64_t steps = 0;
     double dt = 0.0;
@@ -178,8 +206,12 @@ class unfinished_steps {
     if (out.reason == stop_reason::horizon || !(out.duration > out.time)) return 0.0;
     if (!(a.dt > 0.0)) return out.duration > 0.0 ? 1.0 : 0.0;  // stopped before its first step
     const auto total = static_cast<std::int64_t>(std::llround(out.duration / a.dt));
-    return static_cast<double>(std::max<std::int64_t>(total - a.steps, 0));
+    return wu2010::timestep_weight(a.dt, timestep_) *
+           static_cast<double>(std::max<std::int64_t>(total - a.steps, 0));
   }
+
+ private:
+  double timestep_ = 0.0;
 };
 
 using cost_objective = weighted_sum<wu2010_objective_type, unfinished_steps>;
@@ -325,8 +357,21 @@ int run(const cli& c) {
       rate = r.get<double>();
     }
   }
+  std::string stance_target = c.stance_target;
+  if (!c.stance_target_given && !from.empty()) {
+    const saved_walk s = load_walk(from);
+    if (s.info.contains("stance_target")) {
+      const nlohmann::json& v = s.info["stance_target"];
+      if (!v.is_string() || (v != "planned_landing" && v != "touchdown"))
+        throw std::invalid_argument(from + ": stance_target must be \"planned_landing\" or " +
+                                    "\"touchdown\", got " + v.dump());
+      stance_target = v.get<std::string>();
+    }
+  }
   planned_walk_options po;  // Sec. 8.3's forward walk (r = 0.65 m, t_h = 0.55 s)
   po.helper_force = true;
+  po.stance_target = stance_target == "touchdown" ? stance_foot_target::touchdown
+                                                  : stance_foot_target::planned_landing;
   po.period = rate > 0.0 ? 1.0 / rate : 0.0;
   const walk_controller ctrl(m, ground, po);
   const std::vector<std::string> names = ctrl.parameter_names();
@@ -351,10 +396,13 @@ int run(const cli& c) {
   };
   const parameter_space space = make_space();
 
+  wu2010_objective_options cost_options;
+  cost_options.timestep = c.cost_timestep;
   rollout_options opt = base_options();
   opt.initial_state = start_on(m, ground);
   const auto obj =
-      cost_objective({1.0, c.fall_penalty}, wu2010_objective(ctrl.report_layout()), {});
+      cost_objective({1.0, c.fall_penalty}, wu2010_objective(ctrl.report_layout(), cost_options),
+                     unfinished_steps(c.cost_timestep));
   rollout_problem prob{m, torque_actuator{}, ctrl, obj, ground, semi_implicit_euler{}, opt};
 
   Eigen::VectorXd best = Eigen::Map<const Eigen::VectorXd>(x0.data(), std::ssize(x0));
@@ -397,6 +445,8 @@ int run(const cli& c) {
       info["flat"] = c.flat;
       info["fall_penalty"] = c.fall_penalty;
       info["controller_rate"] = rate;
+      info["stance_target"] = stance_target;
+      info["cost_timestep"] = c.cost_timestep;
       info["command"] = c.command;
       save_walk(stem + ".controller.json", names, x, info);
     };
@@ -438,7 +488,7 @@ int run(const cli& c) {
     plain_x[static_cast<Eigen::Index>(i)] = best[at];
   }
   const double h_max = best[static_cast<Eigen::Index>(ctrl.helper_offset())];
-  const auto check_obj = wu2010_objective(plain.report_layout());
+  const auto check_obj = wu2010_objective(plain.report_layout(), cost_options);
   rollout_options check = walk_options(base_options());
   check.duration = c.check_seconds;
   auto scratch = make_rollout_scratch(m);
@@ -481,6 +531,8 @@ int run(const cli& c) {
   sum["field_checks"] = per_field;
   sum["check_seconds"] = c.check_seconds;
   sum["controller_rate"] = rate;
+  sum["stance_target"] = stance_target;
+  sum["cost_timestep"] = c.cost_timestep;
   sum["h_max"] = h_max;
   sum["helper_flat_verdict"] = verdict(helped);  // with the helper force, as optimized
   sum["helper_flat_time"] = helped.seconds;

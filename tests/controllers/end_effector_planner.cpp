@@ -540,6 +540,42 @@ TEST_CASE("half-cycle plan on terrain: landing height, pitch, blind planning, ed
   CHECK(avoid.upper_body_target.x() == Approx(0.325 + p.alpha_a * ds));
 }
 
+TEST_CASE("touchdown stance target: where the foot landed, resting on the ground",
+          "[end_effector][planner]") {
+  planner_setup setup;
+  const half_cycle_plan plan =
+      plan_half_cycle(forward_goal(), planner_parameters{}, setup, forward_input(), flat_terrain{});
+  // A foot that landed 0.3 m off its planned spot, yawed 0.4 rad, pitched and rolled, 2 cm high.
+  end_effector_pose foot;
+  foot.position = vec3(0.95, -0.25, 0.08);
+  foot.rotation = rotation_z(0.4) * rotation_y(-0.2) * rotation_x(0.1);
+  // Flat ground: level with the foot's yaw, the box's lowest corner on z = 0.
+  const link_target flat = touchdown_stance_target(setup, foot, plan, flat_terrain{});
+  CHECK(flat.rotation.isApprox(rotation_z(0.4), 1e-12));
+  CHECK(flat.position.head<2>().isApprox(foot.position.head<2>(), 1e-12));
+  CHECK(box_clearance(flat_terrain{}, setup.foot, flat) == Approx(0.0).margin(1e-9));
+  CHECK(flat.velocity.isZero());
+  CHECK(flat.angular_velocity.isZero());
+  // A 0.2 rad slope rising along +x: the ground's tangent along yaw 0.4 rises atan(tan 0.2 cos
+  // 0.4); the foot keeps its yaw, takes that pitch, and rests on the slope.
+  const slope_terrain slope(0.2);
+  const link_target on_slope = touchdown_stance_target(setup, foot, plan, slope);
+  const vec2 yp = foot_yaw_pitch(on_slope.rotation);
+  CHECK(yp.x() == Approx(0.4));
+  CHECK(yp.y() == Approx(std::atan(std::tan(0.2) * std::cos(0.4))));
+  CHECK(box_clearance(slope, setup.foot, on_slope) == Approx(0.0).margin(1e-9));
+  // Blind: level on the plane of the plan's stance foot (z = 0 here), whatever the terrain.
+  setup.terrain_awareness = false;
+  const link_target blind = touchdown_stance_target(setup, foot, plan, slope);
+  CHECK(blind.rotation.isApprox(rotation_z(0.4), 1e-12));
+  CHECK(box_clearance(flat_terrain{}, setup.foot, blind) == Approx(0.0).margin(1e-9));
+  // A NaN pose is refused, named.
+  foot.position.x() = kNaN;
+  CHECK_THROWS_WITH(
+      touchdown_stance_target(setup, foot, plan, flat_terrain{}),
+      Catch::Contains("touchdown_stance_target") && Catch::Contains("foot.position[0]"));
+}
+
 TEST_CASE("planner: bad input throws naming the value", "[end_effector][planner]") {
   const planner_setup setup;
   const planner_parameters p;

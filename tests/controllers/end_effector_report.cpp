@@ -215,7 +215,8 @@ TEST_CASE("planned_walk's helper force: h_max parameter, bounds, off for h_max <
   CHECK(log_on.max_helper_mismatch < 1e-9);
   CHECK(log_on.max_wrench_mismatch < 1e-9);
   const auto& acc = *states.objective;
+  // L counts eq. 6's 1/64 s timesteps (objectives/wu2010/common.hpp): steps x (1/2400) x 64.
   CHECK(std::get<wu2010_term::helper>(acc).sum ==
-        Approx(5e-3 * static_cast<double>(r_on.steps) * h));
+        Approx(5e-3 * static_cast<double>(r_on.steps) * (64.0 / 2400.0) * h));
   CHECK(std::get<wu2010_term::helper>(acc).sum > 0.0);
 }

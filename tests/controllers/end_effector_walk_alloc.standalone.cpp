@@ -2,7 +2,8 @@
 // nothing after set-up: a rollout with a command every physics step, counted from the objective's
 // first accumulate (after step 0's command, which made the first plan) to its last, runs 2880
 // lower-level ticks and two more plans (t = t_h and 2 t_h) inside the counted region. Also with
-// Sec. 8.1's report read by the wu2010 objective and Sec. 8.2's helper force applied (h_max > 0).
+// Sec. 8.1's report read by the wu2010 objective, Sec. 8.2's helper force applied (h_max > 0) and
+// the stance foot re-targeted at touchdown (planned_walk_options::stance_target).
 #include "support/counting_allocations.hpp"  // first: it configures Eigen
 
 #include <catch2/catch.hpp>
@@ -57,13 +58,14 @@ TEST_CASE("planned_walk ticks and plans without allocating", "[end_effector][all
 }
 
 TEST_CASE(
-    "planned_walk with its report, the wu2010 objective and the helper force allocates "
-    "nothing",
+    "planned_walk with its report, the wu2010 objective, the helper force and touchdown stance "
+    "targets allocates nothing",
     "[end_effector][allocation][wu2010_cost]") {
   CHECK(counters_see_allocations());
   const floating_model m = wu2010_biped();
   planned_walk_options po;
   po.helper_force = true;
+  po.stance_target = stance_foot_target::touchdown;
   const planned_walk<> c(m, flat_terrain{}, po);
   std::vector<double> p = c.default_parameters();
   p[c.helper_offset()] = 200.0;

@@ -4,6 +4,7 @@
 #include <catch2/catch.hpp>
 
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 #include <vector>
 
@@ -32,7 +33,7 @@ struct synthetic {
         tau(Eigen::VectorXd::Zero(model.nv())),
         tau_passive(Eigen::VectorXd::Zero(model.nv())) {
     view.model_ptr = &m;
-    view.dt = 1.0 / 2400.0;
+    view.dt = 1.0 / 64.0;  // one of eq. 6's timesteps (the paper's): each step weighs 1
     view.q_ptr = &q;
     view.v_ptr = &v;
     view.tau_ptr = &tau;
@@ -67,7 +68,7 @@ TEST_CASE("wu2010 tracking error charges squared frame errors above eps_track",
   s.report[s.layout.tracking_begin + 1] = 5e-3;
   obj.accumulate(acc, s.view);
   CHECK(acc.last == Approx(7.5e-3 + 2.5e-3));
-  // Per step: a second identical step doubles it (eq. 6 sums over timesteps, not times dt).
+  // Per timestep: a second identical step doubles it (eq. 6 sums over timesteps).
   obj.accumulate(acc, s.view);
   CHECK(obj.finish(acc, {}) == Approx(2.0 * 1e-2));
   // Every frame at 0.1 m: 10 entries (upper body force and torque, 8 action frames).
@@ -202,4 +203,54 @@ TEST_CASE("wu2010 objective sums eq. 6 and eq. 7's penalty; terms need the repor
   const w10::energy e;
   auto a3 = e.make_accumulator(bare.m);
   CHECK_NOTHROW(e.accumulate(a3, bare.view));
+}
+
+TEST_CASE("wu2010 per-timestep terms weigh a physics step by dt / timestep",
+          "[objectives][wu2010]") {
+  // Eq. 6's j runs over the paper's 1/64 s timesteps (objectives/wu2010/common.hpp); at 2400 Hz
+  // a physics step is 64 / 2400 of one. The COM term is per half-cycle and does not change.
+  synthetic s(biped());
+  const double w = 64.0 / 2400.0;
+  s.set_frame_error(3, 0.1);         // 7.5e-3 per timestep
+  s.report[s.layout.h_max] = 100.0;  // 0.5 per timestep
+  s.tau[floating_root::nv] = 10.0;   // DOF 0
+  const double t0 = s.m.dofs[0].torque_limit;
+  const double e_tau = 8e-2 * 100.0 / (t0 * t0);
+  auto total = [&](double dt, int steps, const wu2010_objective_options& o) {
+    const auto obj = wu2010_objective(s.layout, o);
+    auto acc = obj.make_accumulator(s.m);
+    s.view.dt = dt;
+    for (int j = 0; j < steps; ++j) obj.accumulate(acc, s.view);
+    return obj.finish(acc, {});
+  };
+  const double per_timestep = 7.5e-3 + e_tau + 0.5;
+  // 2400 steps at 2400 Hz are 64 timesteps: 64 x, and the same from 4800 steps at 4800 Hz.
+  CHECK(total(1.0 / 2400.0, 2400, {}) == Approx(64.0 * per_timestep));
+  CHECK(total(1.0 / 4800.0, 4800, {}) == Approx(64.0 * per_timestep));
+  // timestep = 0: each physics step counts once (the runs f1, f2), 37.5 times the above.
+  wu2010_objective_options per_step;
+  per_step.timestep = 0.0;
+  CHECK(total(1.0 / 2400.0, 2400, per_step) == Approx(2400.0 * per_timestep));
+  // Each term alone, one 2400 Hz step.
+  s.view.dt = 1.0 / 2400.0;
+  const w10::tracking_error track(s.layout);
+  auto a1 = track.make_accumulator(s.m);
+  track.accumulate(a1, s.view);
+  CHECK(a1.sum == Approx(w * 7.5e-3));
+  CHECK(a1.last == Approx(7.5e-3));  // the per-step value is unweighted
+  const w10::helper_penalty helper(s.layout, {.w_h = 5e-3, .timestep = 0.01});
+  auto a2 = helper.make_accumulator(s.m);
+  helper.accumulate(a2, s.view);
+  CHECK(a2.sum == Approx(5e-3 * 100.0 / 24.0));  // dt / 0.01 = 1 / 24
+  const w10::energy energy;
+  auto a3 = energy.make_accumulator(s.m);
+  energy.accumulate(a3, s.view);
+  CHECK(a3.sum == Approx(w * e_tau));
+  // A negative or NaN timestep is refused, named.
+  CHECK_THROWS_WITH(
+      w10::energy({.scale = 8e-2, .timestep = -1.0}),
+      Catch::Contains("wu2010::energy") && Catch::Contains("timestep") && Catch::Contains("-1"));
+  wu2010_objective_options bad;
+  bad.timestep = std::numeric_limits<double>::quiet_NaN();
+  CHECK_THROWS_WITH(wu2010_objective(s.layout, bad), Catch::Contains("timestep"));
 }

@@ -108,13 +108,14 @@ inline vec2 upper_body_deviation(const half_cycle_plan& previous, const vec3& up
 }
 
 namespace detail {
-inline void check_pose(const end_effector_pose& p, const char* what) {
+inline void check_pose(const end_effector_pose& p, const char* what,
+                       const char* where = "plan_half_cycle") {
   for (int i = 0; i < 3; ++i)
-    check_argument(std::isfinite(p.position[i]), "plan_half_cycle: ", what, ".position[", i,
+    check_argument(std::isfinite(p.position[i]), where, ": ", what, ".position[", i,
                    "] must be finite, got ", p.position[i]);
   for (int i = 0; i < 9; ++i)
-    check_argument(std::isfinite(p.rotation.data()[i]), "plan_half_cycle: ", what,
-                   ".rotation entry ", i, " must be finite, got ", p.rotation.data()[i]);
+    check_argument(std::isfinite(p.rotation.data()[i]), where, ": ", what, ".rotation entry ", i,
+                   " must be finite, got ", p.rotation.data()[i]);
 }
 }  // namespace detail
 
@@ -201,6 +202,34 @@ half_cycle_plan plan_half_cycle(const task_goal& goal, const planner_parameters&
       make_upper_body_path(in.upper_body.position, in.upper_body.rotation, plan.upper_body_target,
                            plan.upper_body_target_rotation, omega, setup.t_h, goal.movement);
   return plan;
+}
+
+/// Ours (planned_walk_options::stance_target = touchdown; the paper keeps Fig. 5's planned end):
+/// the stance foot's stationary target taken where the foot touched down, `foot` its sensed pose.
+/// The foot keeps its sensed yaw and horizontal position; its pitch and height are those of a foot
+/// resting on the ground there (the terrain's slope along the yaw and the box's lowest
+/// collision-free height, as a swing target's), or, planning blind, level on the plane the plan's
+/// stance foot rests on. So the frames of a foot that landed off its planned spot are pinned (Sec.
+/// 6.3) instead of being dragged toward it.
+template <terrain T>
+link_target touchdown_stance_target(const planner_setup& setup, const end_effector_pose& foot,
+                                    const half_cycle_plan& plan, const T& terrain) {
+  detail::check_pose(foot, "foot", "touchdown_stance_target");
+  const vec2 q = foot.position.head<2>();
+  const double yaw = foot_yaw_pitch(foot.rotation).x();
+  link_target target;
+  if (setup.terrain_awareness) {
+    target.rotation = foot_rotation(yaw, terrain_pitch(terrain, q, yaw));
+    target.position << q,
+        lowest_collision_free_height(terrain, setup.foot, target.rotation, q, setup.footprint_along,
+                                     setup.footprint_across);
+  } else {
+    const mat3& Rst = plan.stance_rest.rotation;
+    const double ground = plan.stance_rest.position.z() - plane_clearance(setup.foot, Rst).height;
+    target.rotation = foot_rotation(yaw, 0.0);
+    target.position << q, ground + plane_clearance(setup.foot, target.rotation).height;
+  }
+  return target;
 }
 
 }  // namespace gaitsynth

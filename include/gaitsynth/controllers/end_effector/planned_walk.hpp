@@ -13,7 +13,9 @@
 /// previous half-cycle's plan (its swing becomes this stance foot's tail; its target gives
 /// dq'_ub,eh) and the terrain. Every command then queries the plan at t - (t_0 + k t_h) and runs
 /// the lower level with Pi_{k mod 2}. The first half-cycle has no previous plan: its stance foot
-/// stays where it stands and psi_f' is the upper body's yaw.
+/// stays where it stands and psi_f' is the upper body's yaw. options.stance_target = touchdown
+/// (ours) re-targets the stance foot, at its first ground contact after the tail, to where it is
+/// (half_cycle_plan.hpp's touchdown_stance_target) instead of the previous swing's planned end.
 ///
 /// Terrain: a controller sees no terrain through sensors (controllers/sensors.hpp), so it holds a
 /// copy of one, given at construction (template parameter T, default flat_terrain). It must be
@@ -70,6 +72,12 @@
 
 namespace gaitsynth {
 
+/// Where the stance foot's stationary target is (Fig. 5's stance-foot path, after t_e').
+enum class stance_foot_target {
+  planned_landing,  ///< the paper: where the previous swing was planned to end
+  touchdown,        ///< ours: where the foot touched down (touchdown_stance_target)
+};
+
 /// How Omega_1 and Pi_1 relate to Omega_0 and Pi_0.
 enum class planned_walk_symmetry {
   asymmetric,        ///< Omega_0, Omega_1, Pi_0, Pi_1 all free (74 parameters)
@@ -91,6 +99,10 @@ struct planned_walk_options {
   end_effector_gains gains{};  ///< Pi for default_parameters()
   planned_walk_symmetry symmetry = planned_walk_symmetry::mirrored_planner;
   stance_side first_stance = stance_side::left;  ///< who stands in half-cycle 0 (Omega_0's)
+  /// Fig. 5 keeps the stance foot at the previous swing's planned end, so a foot that lands
+  /// farther than eps_p from it is never pinned (Sec. 6.3) and eq. 5 drags it over the ground;
+  /// touchdown (ours) re-targets it, at its first ground contact after t_e', to where it landed.
+  stance_foot_target stance_target = stance_foot_target::planned_landing;
   lower_level_options lower{};
   tracking_weights tracking{};  ///< Sec. 8.1's tracking report (Sec. 8.3's weights)
   /// Sec. 8.2: append h_max to the parameters and apply the helper force (off: the paper's
@@ -112,6 +124,8 @@ class planned_walk {
     double half_cycle_start = 0.0;         ///< t_0 + k t_h, s
     double last_plan_time = 0.0;           ///< sensed time of the command that planned, s
     stance_side stance = stance_side::left;
+    bool stance_anchored = false;  ///< stance_target touchdown: the foot has touched down
+    link_target stance_anchor;     ///< and this is its target since
     std::int64_t plans_made = 0;
     std::int64_t commands = 0;
     std::int64_t qp_failures = 0;  ///< ticks whose eq. 5 QP did not return optimal (torques 0)
@@ -306,6 +320,7 @@ class planned_walk {
     st.half_cycle = -1;
     st.start_time = st.half_cycle_start = st.last_plan_time = 0.0;
     st.stance = opt_.first_stance;
+    st.stance_anchored = false;
     st.plans_made = st.commands = st.qp_failures = 0;
     st.helper.setZero();
     clear_report(st);
@@ -330,7 +345,9 @@ class planned_walk {
     const auto k = static_cast<std::int64_t>(std::floor((s.t - st.start_time) / t_h + 1e-9 / t_h));
     if (k != st.half_cycle) plan(s, st, k < 0 ? 0 : k);
     const half_cycle_plan& p = st.plans[static_cast<std::size_t>(st.current)];
-    p.link_targets(std::max(0.0, s.t - st.half_cycle_start), st.targets);
+    const double t_plan = std::max(0.0, s.t - st.half_cycle_start);
+    p.link_targets(t_plan, st.targets);
+    if (opt_.stance_target == stance_foot_target::touchdown) hold_touchdown(s, st, p, t_plan);
     const end_effector_gains& g = gains_[static_cast<std::size_t>(st.half_cycle % 2)];
     const Eigen::VectorXd& tau = lower_level_torques(s.model(), layout_, g, opt_.lower, s.q(),
                                                      s.v(), st.targets, s.contact_active, st.lower);
@@ -365,12 +382,37 @@ class planned_walk {
     st.half_cycle_start = st.start_time + static_cast<double>(k) * opt_.setup.t_h;
     st.last_plan_time = s.t;
     st.stance = stance;
+    st.stance_anchored = false;
     ++st.plans_made;
     // Sec. 8.1: c_k = c^_{k-1} + R_z(psi_m) (r x), from the COM sensed as half-cycle k starts.
     const double psi_m = opt_.goal.movement, r = opt_.goal.step_length;
     st.report[report_layout_.half_cycle] = static_cast<double>(k);
     st.report[report_layout_.com_target] = s.com.x() + r * std::cos(psi_m);
     st.report[report_layout_.com_target + 1] = s.com.y() + r * std::sin(psi_m);
+  }
+
+  /// stance_target touchdown: once the previous swing's tail is over (t >= t_e') and a contact
+  /// point of the stance foot touches, its target becomes where it is (touchdown_stance_target)
+  /// for the rest of the half-cycle. Before that, the plan's target.
+  void hold_touchdown(const sensors<Root>& s, state_type& st, const half_cycle_plan& p,
+                      double t) const {
+    const std::size_t link = st.stance == stance_side::left ? 1 : 2;
+    if (!st.stance_anchored) {
+      if (p.has_tail && t < p.tail_end) return;
+      bool touching = false;
+      for (const action_frame& a : layout_.action)
+        if (static_cast<std::size_t>(a.link) == link)
+          for (const int c : a.contacts)
+            touching = touching || (static_cast<std::size_t>(c) < s.contact_active.size() &&
+                                    s.contact_active[static_cast<std::size_t>(c)]);
+      if (!touching) return;
+      const auto& ws = s.workspace();
+      const int b = layout_.link_body[link];
+      st.stance_anchor = touchdown_stance_target(
+          opt_.setup, end_effector_pose{ws.body_position[b], ws.body_rotation[b]}, p, terrain_);
+      st.stance_anchored = true;
+    }
+    st.targets[link] = st.stance_anchor;
   }
 
   void clear_report(state_type& st) const {

@@ -5,7 +5,8 @@
 /// W_pref = diag(1 / tau_max,i^2) from the model's joint torque limits (Sec. 8.3: "to encourage
 /// use of stronger muscles"); a DOF without a finite limit is not charged. tau_theta is the
 /// actuator's joint torques (step_view::joint_torques(); not the passive limit springs). A sum over
-/// physics steps, not times dt, as eq. 6 writes it. Reads no controller report: any controller.
+/// eq. 6's timesteps: each physics step counts dt / timestep (common.hpp; 1/64 s, the paper's), 1
+/// with timestep = 0. Reads no controller report: any controller.
 #include <Eigen/Core>
 #include <array>
 #include <cmath>
@@ -14,11 +15,13 @@
 
 #include "gaitsynth/error.hpp"
 #include "gaitsynth/objectives/concept.hpp"
+#include "gaitsynth/objectives/wu2010/common.hpp"
 
 namespace gaitsynth::wu2010 {
 
 struct energy_options {
-  double scale = 8e-2;  ///< W_tau = scale W_pref (>= 0)
+  double scale = 8e-2;               ///< W_tau = scale W_pref (>= 0)
+  double timestep = paper_timestep;  ///< s, eq. 6's j (common.hpp); 0: per physics step
 };
 
 class energy {
@@ -27,12 +30,13 @@ class energy {
   struct accumulator_type {
     Eigen::VectorXd weight;  ///< nj: W_tau's diagonal, 1/(N m)^2
     double sum = 0.0;        ///< E_tau so far
-    double last = 0.0;       ///< this step's ||tau_theta||^2_{W_tau}
+    double last = 0.0;       ///< this step's ||tau_theta||^2_{W_tau} (unweighted)
   };
 
   explicit energy(options o = {}) : opt_(o) {
     check_argument(std::isfinite(opt_.scale) && opt_.scale >= 0.0,
                    "wu2010::energy: scale must be finite and >= 0, got ", opt_.scale);
+    check_timestep(opt_.timestep, "wu2010::energy");
   }
   const options& opts() const { return opt_; }
 
@@ -54,7 +58,7 @@ class energy {
   template <class View>
   void accumulate(accumulator_type& a, const View& v) const {
     a.last = (a.weight.array() * v.joint_torques().array().square()).sum();
-    a.sum += a.last;
+    a.sum += timestep_weight(v.dt, opt_.timestep) * a.last;
   }
   double finish(const accumulator_type& a, const rollout_outcome&) const { return a.sum; }
 

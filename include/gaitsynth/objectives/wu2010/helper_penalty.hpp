@@ -2,8 +2,9 @@
 /// \file objectives/wu2010/helper_penalty.hpp
 /// The helper force's exact nonsmooth penalty of Wu & Popovic 2010, Sec. 8.2, eq. 7:
 ///     w_h L {h_max}+,   w_h = 5e-3 (Sec. 8.3), L the number of timesteps,
-/// accumulated as w_h {h_max}+ per physics step, h_max read from planned_walk's report (0 without
-/// the helper force), so over L steps it totals w_h L {h_max}+ exactly.
+/// accumulated as w_h {h_max}+ dt / timestep per physics step (common.hpp: L counts eq. 6's
+/// timesteps, 1/64 s, the paper's; timestep = 0: physics steps), h_max read from planned_walk's
+/// report (0 without the helper force), so over T seconds it totals w_h (T / timestep) {h_max}+.
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -17,7 +18,8 @@
 namespace gaitsynth::wu2010 {
 
 struct helper_penalty_options {
-  double w_h = 5e-3;  ///< 1/N per step (>= 0)
+  double w_h = 5e-3;                 ///< 1/N per timestep (>= 0)
+  double timestep = paper_timestep;  ///< s, eq. 6's j (common.hpp); 0: per physics step
 };
 
 class helper_penalty {
@@ -31,6 +33,7 @@ class helper_penalty {
       : layout_(layout), opt_(o) {
     check_argument(std::isfinite(opt_.w_h) && opt_.w_h >= 0.0,
                    "wu2010::helper_penalty: w_h must be finite and >= 0, got ", opt_.w_h);
+    check_timestep(opt_.timestep, "wu2010::helper_penalty");
   }
   const options& opts() const { return opt_; }
 
@@ -45,7 +48,7 @@ class helper_penalty {
   template <class View>
   void accumulate(accumulator_type& a, const View& v) const {
     const auto r = checked_report(v.controller_report, layout_, "wu2010::helper_penalty");
-    a.sum += opt_.w_h * std::max(r[layout_.h_max], 0.0);
+    a.sum += timestep_weight(v.dt, opt_.timestep) * opt_.w_h * std::max(r[layout_.h_max], 0.0);
   }
   double finish(const accumulator_type& a, const rollout_outcome&) const { return a.sum; }
 

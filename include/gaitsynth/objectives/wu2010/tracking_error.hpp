@@ -5,8 +5,8 @@
 ///     eps_track}+ for the LA frame),
 /// j the timestep, f_i and tau_i eqs. 1-3 with sqrt(tracking weights) as coefficients and no bias,
 /// whose squared norms planned_walk reports (planned_walk_report.hpp). Tolerance eps_track =
-/// 2.5e-3 (m^2 with Sec. 8.3's unit weights). A sum over physics steps, not an integral (not times
-/// dt), as eq. 6 writes it.
+/// 2.5e-3 (m^2 with Sec. 8.3's unit weights). A sum over eq. 6's timesteps: each physics step
+/// counts dt / timestep (common.hpp; 1/64 s, the paper's), 1 with timestep = 0.
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -20,7 +20,8 @@
 namespace gaitsynth::wu2010 {
 
 struct tracking_error_options {
-  double eps_track = 2.5e-3;  ///< Sec. 8.1's tolerance (>= 0)
+  double eps_track = 2.5e-3;         ///< Sec. 8.1's tolerance (>= 0)
+  double timestep = paper_timestep;  ///< s, eq. 6's j (common.hpp); 0: per physics step
 };
 
 class tracking_error {
@@ -28,7 +29,7 @@ class tracking_error {
   using options = tracking_error_options;
   struct accumulator_type {
     double sum = 0.0;   ///< E_track so far
-    double last = 0.0;  ///< this step's sum_i e_track,i
+    double last = 0.0;  ///< this step's sum_i e_track,i (unweighted)
   };
 
   explicit tracking_error(const planned_walk_report_layout& layout, options o = {})
@@ -36,6 +37,7 @@ class tracking_error {
     check_argument(std::isfinite(opt_.eps_track) && opt_.eps_track >= 0.0,
                    "wu2010::tracking_error: eps_track must be finite and >= 0, got ",
                    opt_.eps_track);
+    check_timestep(opt_.timestep, "wu2010::tracking_error");
   }
   const options& opts() const { return opt_; }
 
@@ -54,7 +56,7 @@ class tracking_error {
     for (std::size_t i = 0; i < layout_.tracking_count; ++i)
       e += std::max(r[layout_.tracking_begin + i] - opt_.eps_track, 0.0);
     a.last = e;
-    a.sum += e;
+    a.sum += timestep_weight(v.dt, opt_.timestep) * e;
   }
   double finish(const accumulator_type& a, const rollout_outcome&) const { return a.sum; }
 

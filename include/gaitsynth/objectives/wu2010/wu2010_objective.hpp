@@ -5,9 +5,10 @@
 ///                             + sum_j ||tau_theta||^2_{W_tau} + w_h L {h_max}+,
 /// as a weighted_sum of the four terms (one file each in this folder) with unit weights: the
 /// paper's weights (eps_track, W_c, W_tau, w_h; Sec. 8.3) are inside the terms' options. Every sum
-/// over j is over physics steps as eq. 6 writes it (not times dt; L = the steps simulated), so the
-/// cost scales with the simulation rate. The terms read planned_walk's report, so the objective is
-/// made from the controller's report layout:
+/// over j is over the paper's 1/64 s timesteps (common.hpp: a physics step counts dt / timestep),
+/// so the cost does not depend on the simulation rate; `timestep` = 0 counts physics steps
+/// instead (the runs f1 and f2 of data/wu2010/). The terms read planned_walk's report, so the
+/// objective is made from the controller's report layout:
 ///
 ///   planned_walk<> ctrl(m, ground, {.helper_force = true});
 ///   auto obj = wu2010_objective(ctrl.report_layout());
@@ -32,6 +33,8 @@ struct wu2010_objective_options {
   /// Multipliers of the four terms (1: eq. 6 and 7 as published; 0 ablates a term, which is
   /// still measured and recorded).
   std::array<double, 4> weights{1.0, 1.0, 1.0, 1.0};
+  /// Eq. 6's timestep for the three per-timestep terms (common.hpp), s; replaces theirs.
+  double timestep = wu2010::paper_timestep;
 };
 
 using wu2010_objective_type = weighted_sum<wu2010::tracking_error, wu2010::com_deviation,
@@ -44,9 +47,13 @@ struct wu2010_term {
 
 inline wu2010_objective_type wu2010_objective(const planned_walk_report_layout& layout,
                                               const wu2010_objective_options& o = {}) {
-  return wu2010_objective_type(o.weights, wu2010::tracking_error(layout, o.tracking),
-                               wu2010::com_deviation(layout, o.com), wu2010::energy(o.energy),
-                               wu2010::helper_penalty(layout, o.helper));
+  auto tracking = o.tracking;
+  auto energy = o.energy;
+  auto helper = o.helper;
+  tracking.timestep = energy.timestep = helper.timestep = o.timestep;
+  return wu2010_objective_type(o.weights, wu2010::tracking_error(layout, tracking),
+                               wu2010::com_deviation(layout, o.com), wu2010::energy(energy),
+                               wu2010::helper_penalty(layout, helper));
 }
 
 }  // namespace gaitsynth
