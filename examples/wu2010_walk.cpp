@@ -15,7 +15,7 @@
 //   wu2010_walk [--iterations N] [--threads N] [--seed K] [--out DIR] [--init FILE]
 //               [--horizon S] [--flat] [--fall-penalty W] [--check-seconds S]
 //               [--controller-rate HZ] [--sigma S] [--cost-timestep S]
-//               [--stance-target planned_landing|touchdown]
+//               [--stance-target planned_landing|touchdown] [--no-helper]
 //   wu2010_walk --resume DIR [--threads N]
 //   wu2010_walk --replay FILE [--check-seconds S] [--out DIR]
 //
@@ -32,6 +32,10 @@
 //
 // Stance target (--stance-target, ours; default the paper's planned_landing): touchdown re-targets
 // the stance foot to where it landed (planned_walk_options::stance_target).
+//
+// --no-helper (ours): optimize without the helper force (no h_max parameter, no penalty), e.g. a
+// second stage from a helped run's best (--init FILE drops its h_max) when that run ends with
+// h_max > 0. The saved controller records "helper_force": false, which --replay follows.
 // wang2009::failure is not used: its per-step test is the COM below a fixed height above a fixed
 // ground height, which the 0-0.2 m height fields shift.
 //
@@ -58,6 +62,7 @@
 #include <iostream>
 #include <map>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <span>
 #include <stdexcept>
 #include <string>
@@ -107,6 +112,7 @@ struct cli {
   bool controller_rate_given = false;
   std::string stance_target = "planned_landing";  // planned_walk_options::stance_target
   double cost_timestep = wu2010::paper_timestep;  // s; 0: eq. 6 summed per physics step
+  bool no_helper = false;
   bool stance_target_given = false;
   std::string command, out_arg;
   nlohmann::json options;
@@ -156,6 +162,9 @@ cli parse(int argc, char** argv) {
                  "the stance foot's stationary target: planned_landing (the paper, Fig. 5) or "
                  "touchdown (ours: where it landed; a saved controller's own when replaying)")
       ->check(CLI::IsMember({"planned_landing", "touchdown"}));
+  app.add_flag("--no-helper", c.no_helper,
+               "optimize without Sec. 8.2's helper force (no h_max parameter; ours: a second "
+               "stage from a helped run's --init)");
   app.add_option("--cost-timestep", c.cost_timestep,
                  "eq. 6's timestep, s: each physics step counts dt / this (the paper's 64 Hz "
                  "step); 0: each physics step counts once")
@@ -368,8 +377,19 @@ int run(const cli& c) {
       stance_target = v.get<std::string>();
     }
   }
+  // The helper force: on (Sec. 8.2) unless --no-helper or a replayed controller without it.
+  bool helper = !c.no_helper;
+  if (!c.replay.empty()) {
+    const saved_walk s = load_walk(c.replay);
+    if (s.info.contains("helper_force")) {
+      if (!s.info["helper_force"].is_boolean())
+        throw std::invalid_argument(c.replay + ": helper_force must be true or false, got " +
+                                    s.info["helper_force"].dump());
+      helper = s.info["helper_force"].get<bool>();
+    }
+  }
   planned_walk_options po;  // Sec. 8.3's forward walk (r = 0.65 m, t_h = 0.55 s)
-  po.helper_force = true;
+  po.helper_force = helper;
   po.stance_target = stance_target == "touchdown" ? stance_foot_target::touchdown
                                                   : stance_foot_target::planned_landing;
   po.period = rate > 0.0 ? 1.0 / rate : 0.0;
@@ -436,7 +456,8 @@ int run(const cli& c) {
     }
     auto save = [&](const Eigen::VectorXd& x, double cost, const optimizer_status& st) {
       nlohmann::ordered_json info;
-      info["h_max"] = x[static_cast<Eigen::Index>(ctrl.helper_offset())];
+      info["h_max"] = helper ? x[static_cast<Eigen::Index>(ctrl.helper_offset())] : 0.0;
+      info["helper_force"] = helper;
       info["cost"] = cost;
       info["iterations"] = st.iteration;
       info["evaluations"] = st.evaluations;
@@ -487,7 +508,7 @@ int run(const cli& c) {
     const auto at = std::find(names.begin(), names.end(), plain_names[i]) - names.begin();
     plain_x[static_cast<Eigen::Index>(i)] = best[at];
   }
-  const double h_max = best[static_cast<Eigen::Index>(ctrl.helper_offset())];
+  const double h_max = helper ? best[static_cast<Eigen::Index>(ctrl.helper_offset())] : 0.0;
   const auto check_obj = wu2010_objective(plain.report_layout(), cost_options);
   rollout_options check = walk_options(base_options());
   check.duration = c.check_seconds;
@@ -505,9 +526,12 @@ int run(const cli& c) {
   field = training_field(0, true);
   check.initial_state = start_on(m, ground);
   check.record = nullptr;
-  const walk_check helped = judge_walk(rollout(
-      m, torque_actuator{}, ctrl, obj, ground, semi_implicit_euler{},
-      std::span<const double>(best.data(), static_cast<std::size_t>(best.size())), check, scratch));
+  std::optional<walk_check> helped;
+  if (helper)
+    helped = judge_walk(
+        rollout(m, torque_actuator{}, ctrl, obj, ground, semi_implicit_euler{},
+                std::span<const double>(best.data(), static_cast<std::size_t>(best.size())), check,
+                scratch));
   trajectory tr;
   const walk_check flat = walk_on(training_field(0, true), &tr);
   save_csv(stem + ".csv", tr);
@@ -534,9 +558,12 @@ int run(const cli& c) {
   sum["stance_target"] = stance_target;
   sum["cost_timestep"] = c.cost_timestep;
   sum["h_max"] = h_max;
-  sum["helper_flat_verdict"] = verdict(helped);  // with the helper force, as optimized
-  sum["helper_flat_time"] = helped.seconds;
-  sum["helper_flat_distance"] = helped.distance;
+  sum["helper_force"] = helper;
+  if (helped) {
+    sum["helper_flat_verdict"] = verdict(*helped);  // with the helper force, as optimized
+    sum["helper_flat_time"] = helped->seconds;
+    sum["helper_flat_distance"] = helped->distance;
+  }
   sum["evaluations"] = evaluations;
   sum["iterations"] = iterations;
   example_cli::report_summary(sum, c.out);

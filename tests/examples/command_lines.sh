@@ -49,6 +49,12 @@ case "$mode" in
         expect 2 "--check-seconds: must be in .*, got nan" -- "$exe" --check-seconds nan
         expect 2 "--check-seconds: must be in .*, got -5" -- "$exe" --check-seconds -5
       fi
+      if grep -q -- "--stance-target" <<<"$help"; then
+        expect 2 "--stance-target: sideways not in \{planned_landing,touchdown\}" -- \
+          "$exe" --stance-target sideways
+        expect 2 "--cost-timestep: must be in .*, got -1" -- "$exe" --cost-timestep -1
+        expect 2 "--cost-timestep: must be in .*, got nan" -- "$exe" --cost-timestep nan
+      fi
       if grep -q -- "--seed" <<<"$help"; then
         expect 2 "--seed: must be in .*, got -3" -- "$exe" --seed -3
       fi
