@@ -16,6 +16,7 @@
 //               [--horizon S] [--flat] [--fall-penalty W] [--check-seconds S]
 //               [--controller-rate HZ] [--sigma S] [--cost-timestep S]
 //               [--stance-target planned_landing|touchdown] [--no-helper]
+//               [--divergence fall|infinite]
 //   wu2010_walk --resume DIR [--threads N]
 //   wu2010_walk --replay FILE [--check-seconds S] [--out DIR]
 //
@@ -32,6 +33,13 @@
 //
 // Stance target (--stance-target, ours; default the paper's planned_landing): touchdown re-targets
 // the stance foot to where it landed (planned_walk_options::stance_target).
+//
+// Divergence (--divergence, ours): a candidate whose simulation diverges (most often while it
+// falls) is scored like a fall at its last sane step (fall, the default: rollout_options::
+// score_divergence, the fall guard charging the rest), or costs +infinity (infinite: the
+// library's default, which f1, f2 and f3 used and a --resume of a run that did not record the
+// option keeps). With +infinity a helper-free stage whose candidates mostly diverge cannot rank
+// them.
 //
 // --no-helper (ours): optimize without the helper force (no h_max parameter, no penalty), e.g. a
 // second stage from a helped run's best (--init FILE drops its h_max) when that run ends with
@@ -113,6 +121,7 @@ struct cli {
   std::string stance_target = "planned_landing";  // planned_walk_options::stance_target
   double cost_timestep = wu2010::paper_timestep;  // s; 0: eq. 6 summed per physics step
   bool no_helper = false;
+  std::string divergence = "fall";  // rollout_options::score_divergence (ours)
   bool stance_target_given = false;
   std::string command, out_arg;
   nlohmann::json options;
@@ -165,6 +174,10 @@ cli parse(int argc, char** argv) {
   app.add_flag("--no-helper", c.no_helper,
                "optimize without Sec. 8.2's helper force (no h_max parameter; ours: a second "
                "stage from a helped run's --init)");
+  app.add_option("--divergence", c.divergence,
+                 "a diverged candidate: scored as a fall at its last sane step (fall, ours) or "
+                 "+infinity (infinite)")
+      ->check(CLI::IsMember({"fall", "infinite"}));
   app.add_option("--cost-timestep", c.cost_timestep,
                  "eq. 6's timestep, s: each physics step counts dt / this (the paper's 64 Hz "
                  "step); 0: each physics step counts once")
@@ -178,6 +191,8 @@ cli parse(int argc, char** argv) {
     const auto recorded = example_cli::recorded_arguments(resume, {});
     if (std::find(recorded.begin(), recorded.end(), "--cost-timestep") == recorded.end())
       c.cost_timestep = 0.0;
+    if (std::find(recorded.begin(), recorded.end(), "--divergence") == recorded.end())
+      c.divergence = "infinite";
     out = resume;
     c.resume = true;
   }
@@ -420,6 +435,7 @@ int run(const cli& c) {
   cost_options.timestep = c.cost_timestep;
   rollout_options opt = base_options();
   opt.initial_state = start_on(m, ground);
+  opt.score_divergence = c.divergence == "fall";
   const auto obj =
       cost_objective({1.0, c.fall_penalty}, wu2010_objective(ctrl.report_layout(), cost_options),
                      unfinished_steps(c.cost_timestep));
@@ -468,6 +484,7 @@ int run(const cli& c) {
       info["controller_rate"] = rate;
       info["stance_target"] = stance_target;
       info["cost_timestep"] = c.cost_timestep;
+      info["divergence"] = c.divergence;
       info["command"] = c.command;
       save_walk(stem + ".controller.json", names, x, info);
     };

@@ -326,6 +326,58 @@ TEST_CASE("a diverging simulation is a failed rollout with cost +infinity, not a
   }
 }
 
+namespace {
+
+/// Counts the steps it accumulated (and whether each saw a finite state) and charges 1000 per
+/// second of the horizon left: a fall guard.
+struct steps_and_rest {
+  struct accumulator_type {
+    std::int64_t steps = 0;
+    bool all_finite = true;
+  };
+  accumulator_type make_accumulator(const floating_model&) const { return {}; }
+  void accumulate(accumulator_type& a, const auto& v) const {
+    ++a.steps;
+    a.all_finite = a.all_finite && v.q().allFinite() && v.v().allFinite();
+  }
+  double finish(const accumulator_type& a, const rollout_outcome& out) const {
+    if (!a.all_finite || out.reason != stop_reason::non_finite) return -1.0;
+    return static_cast<double>(a.steps) + 1000.0 * (out.duration - out.time);
+  }
+};
+
+}  // namespace
+
+TEST_CASE("score_divergence: a diverged rollout scored like an early stop at its last sane step",
+          "[rollout][divergence]") {
+  // The divergence above under steps_and_rest: finish() sees non_finite, the time the rollout
+  // lasted, and only finite states.
+  auto m = wang2009_humanoid();
+  for (auto& d : m.dofs) d.torque_limit = 1e12;
+  auto scr = make_rollout_scratch(m);
+  auto opt = standing_options(m, 1.0);
+  opt.detect_falls = false;
+  opt.dt = 0.01;
+  const Eigen::VectorXd kp = Eigen::VectorXd::Constant(m.num_joint_dofs(), 1e7);
+  Eigen::VectorXd target = standing_pose(m);
+  target.setConstant(0.5);
+  auto run = [&] {
+    return rollout(m, pd_actuator(kp, 0.1 * kp), pose_hold(m), steps_and_rest{}, flat_terrain(),
+                   semi_implicit_euler(), target, opt, scr);
+  };
+  const rollout_result off = run();
+  CHECK(off.cost == std::numeric_limits<double>::infinity());
+  opt.score_divergence = true;
+  const rollout_result on = run();
+  CHECK(on.diverged());
+  CHECK(on.time == off.time);
+  REQUIRE(on.time < 1.0);
+  // Every step it simulated was accumulated, each from a finite state (the step that blew up
+  // started from one), and the rest of the horizon charged.
+  CHECK(on.cost == Approx(static_cast<double>(on.steps) + 1000.0 * (1.0 - on.time)));
+  CHECK(on.objective_value == on.cost);
+}
+
 TEST_CASE("a blow-up is reported as a divergence, not as a fall far away",
           "[rollout][divergence]") {
   auto m = wang2009_humanoid();

@@ -42,6 +42,13 @@ struct rollout_options {
   /// fall test then reported a "fall" 1e10 m away; no biped's COM moves at 100 m/s (a 10 m free
   /// fall reaches 14 m/s). Infinity turns it off.
   double divergence_com_speed = 100.0;
+  /// Off (the default): a diverged rollout costs +infinity (failed_rollout_cost) and the
+  /// objective's finish() is not called. On: it is scored like any early stop at its last sane
+  /// step, finish() seeing stop_reason::non_finite and terms that only ever accumulated finite
+  /// states; for an objective that charges the horizon left unsimulated (a fall guard), so that an
+  /// optimizer whose candidates mostly diverge while falling can still rank them by how long they
+  /// lasted. The result stays diverged(); a non-finite objective value still costs +infinity.
+  bool score_divergence = false;
 
   /// Joint dampers taken implicitly (backward Euler), off by default. The actuator's rate
   /// coefficients (actuator_with_joint_damping: kd of every PD servo whose torque is not clamped)

@@ -7,7 +7,9 @@
 ///     objective computes (objective::finish); falling is expressed by the objective (for example
 ///     time_to_fall), not by the loop;
 ///   - a rollout whose state stops being finite (divergence) gets cost = +infinity
-///     (failed_rollout_cost) and reason stop_reason::non_finite; finish() is not called;
+///     (failed_rollout_cost) and reason stop_reason::non_finite; finish() is not called (unless
+///     rollout_options::score_divergence: then finish() scores it like an early stop, and a
+///     non-finite value is +infinity);
 ///   - a finish() that returns NaN is reported as +infinity as well (objective_value keeps the
 ///   NaN).
 /// So the cost is never NaN; optimizers rank +infinity (and, defensively, any non-finite value)

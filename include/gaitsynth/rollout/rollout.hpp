@@ -38,7 +38,8 @@
 ///      continuous dynamics (a derivative and a vector state) is integrated with (q, v) in the
 ///      same system, its torques re-evaluated at every stage; otherwise its state advances after
 ///      the step (advance, or an explicit Euler step of derivative);
-///   8. stop if q or v is no longer finite (cost +infinity; rollout/result.hpp).
+///   8. stop if q or v is no longer finite (cost +infinity, or with options.score_divergence the
+///      objective's score of an early stop; rollout/result.hpp).
 /// After the loop the observers see the state it stopped in, with the result.
 #include <Eigen/Core>
 #include <algorithm>
@@ -632,7 +633,7 @@ rollout_result rollout_impl(const model<Root>& m, const Actuator& act, C& ctrl,
     view.final_state_valid = reason != stop_reason::non_finite;
     obs.finish(std::as_const(view), std::as_const(res));
   };
-  if (reason == stop_reason::non_finite) {
+  if (reason == stop_reason::non_finite && !opt.score_divergence) {
     res.cost = failed_rollout_cost;
     finish_observers();
     return res;
@@ -645,7 +646,9 @@ rollout_result rollout_impl(const model<Root>& m, const Actuator& act, C& ctrl,
   out.com_initial = res.com_initial;
   out.com_final = res.com_final;
   res.objective_value = static_cast<double>(obj.finish(std::as_const(acc), out));
-  res.cost = std::isnan(res.objective_value) ? failed_rollout_cost : res.objective_value;
+  const bool unusable = reason == stop_reason::non_finite ? !std::isfinite(res.objective_value)
+                                                          : std::isnan(res.objective_value);
+  res.cost = unusable ? failed_rollout_cost : res.objective_value;
   finish_observers();
   return res;
 }
