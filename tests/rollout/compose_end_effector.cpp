@@ -116,10 +116,12 @@ TEST_CASE("planned_walk composes with the Wu 2010 cost terms and the helper forc
       m, flat_terrain{}, [](const L& l) { return wu2010::helper_penalty(l); }, 100.0));
   check(walk_wu2010<odeint_rk4>(
       m, slope_terrain(0.05), [](const L& l) { return wu2010_objective(l); }, 300.0));
-  // The helper penalty over L steps is w_h L {h_max}+ exactly.
+  // The helper penalty over L timesteps is w_h L {h_max}+ exactly; L counts the paper's 1/64 s
+  // timesteps (objectives/wu2010/common.hpp): steps x dt x 64, dt the rollout's default 1/2400 s.
   const auto r = walk_wu2010<semi_implicit_euler>(
       m, flat_terrain{}, [](const L& l) { return wu2010::helper_penalty(l); }, 100.0);
-  CHECK(r.cost == Approx(5e-3 * static_cast<double>(r.steps) * 100.0));
+  CHECK(r.cost ==
+        Approx(5e-3 * static_cast<double>(r.steps) * (rollout_options{}.dt * 64.0) * 100.0));
   // Mixed with a term that reads no report.
   check(walk_wu2010<semi_implicit_euler>(m, flat_terrain{}, [](const L& l) {
     return weighted_sum<wu2010_objective_type, wang2009::failure>({1.0, 1.0}, wu2010_objective(l),
