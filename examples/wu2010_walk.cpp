@@ -59,6 +59,7 @@
 // fields (seeds 9001..9010), with the library's stall rule (rollout/walk_check.hpp).
 //
 // Writes DIR/wu2010_walk.controller.json (parameter names and values, h_max, cost, command),
+// .mean.json (CMA-ES's mean, clipped to the bounds, in the same format: --replay takes it),
 // .convergence.csv, .checkpoint (every 10 iterations), .csv (the flat check rollout), options.json
 // and summary.json, and prints a one-line JSON summary on stdout.
 #include <Eigen/Core>
@@ -470,11 +471,12 @@ int run(const cli& c) {
       load_checkpoint(cma, ro.checkpoint_file);  // (minimize loads it again) its iteration count
       use_field(cma.status().iteration);
     }
-    auto save = [&](const Eigen::VectorXd& x, double cost, const optimizer_status& st) {
+    auto save = [&](const Eigen::VectorXd& x, double cost, const optimizer_status& st,
+                    const char* suffix = ".controller.json") {
       nlohmann::ordered_json info;
       info["h_max"] = helper ? x[static_cast<Eigen::Index>(ctrl.helper_offset())] : 0.0;
       info["helper_force"] = helper;
-      info["cost"] = cost;
+      if (std::isfinite(cost)) info["cost"] = cost;
       info["iterations"] = st.iteration;
       info["evaluations"] = st.evaluations;
       info["seed"] = c.seed;
@@ -486,7 +488,18 @@ int run(const cli& c) {
       info["cost_timestep"] = c.cost_timestep;
       info["divergence"] = c.divergence;
       info["command"] = c.command;
-      save_walk(stem + ".controller.json", names, x, info);
+      save_walk(stem + suffix, names, x, info);
+    };
+    // The distribution's mean, clipped to the bounds: on a new field every iteration the best
+    // single sample is partly luck (an easy field), the mean what the search has settled on.
+    auto save_mean = [&](const optimizer_status& st) {
+      Eigen::VectorXd mu = cma.mean_user();
+      const std::vector<parameter_spec>& specs = space.parameters();
+      for (std::size_t i = 0; i < specs.size(); ++i) {
+        const auto k = static_cast<Eigen::Index>(i);
+        mu[k] = std::clamp(mu[k], specs[i].lower, specs[i].upper);
+      }
+      save(mu, std::numeric_limits<double>::quiet_NaN(), st, ".mean.json");
     };
     thread_pool_evaluator pool(c.threads);
     problem_contexts ctx(prob, pool.thread_count());
@@ -494,6 +507,7 @@ int run(const cli& c) {
     auto per_iteration = [&](const optimizer_status& st) {
       if (st.iteration % 10 == 0 && std::isfinite(cma.best_value()))
         save(cma.best_x(), cma.best_value(), st);
+      if (st.iteration % 10 == 0) save_mean(st);
       use_field(st.iteration);  // Sec. 8.3: a new height field for the next iteration
     };
     const optimization_result res = minimize(cma, cost, pool, ro, per_iteration);
@@ -502,6 +516,7 @@ int run(const cli& c) {
     iterations = res.iterations;
     evaluations = res.evaluations;
     save(best, best_cost, cma.status());
+    save_mean(cma.status());
     std::cerr << "wu2010_walk: " << res.iterations << " iterations, " << res.evaluations
               << " evaluations; this call: " << res.elapsed_seconds
               << " s; stop: " << to_string(res.stopped) << "\n";
