@@ -82,6 +82,7 @@
 #include "gaitsynth/contact/height_field_terrain.hpp"
 #include "gaitsynth/contact/terrain_ref.hpp"
 #include "gaitsynth/controllers/end_effector/planned_walk.hpp"
+#include "gaitsynth/controllers/end_effector/planned_walk_json.hpp"
 #include "gaitsynth/integrators/semi_implicit_euler.hpp"
 #include "gaitsynth/io/csv.hpp"
 #include "gaitsynth/models/wu2010.hpp"
@@ -257,104 +258,6 @@ sim_state start_on(const floating_model& m, const T& ground) {
   return s;
 }
 
-/// A saved controller: the parameter vector by name (the helper-force controller's, h_max last).
-struct saved_walk {
-  std::vector<std::string> names;
-  std::vector<double> values;
-  nlohmann::json info = nlohmann::json::object();  // cost, h_max, iterations, ...
-};
-
-void save_walk(const fs::path& file, const std::vector<std::string>& names,
-               const Eigen::VectorXd& x, nlohmann::ordered_json info) {
-  nlohmann::ordered_json j;
-  j["controller"] = "planned_walk";
-  j["paper"] = "Wu & Popovic 2010, Sec. 7-8 (cyclical forward walk)";
-  j["symmetry"] = "mirrored_planner";
-  j["parameter_names"] = names;
-  j["parameters"] = std::vector<double>(x.data(), x.data() + x.size());
-  for (auto& [k, v] : info.items()) j[k] = v;
-  const fs::path tmp = file.string() + ".tmp";
-  {
-    std::ofstream out(tmp);
-    out << j.dump(2) << "\n";
-    if (!out) throw std::runtime_error("cannot write " + tmp.string());
-  }
-  fs::rename(tmp, file);
-}
-
-saved_walk load_walk(const fs::path& file) {
-  std::ifstream in(file);
-  if (!in) throw std::runtime_error("cannot read " + file.string());
-  nlohmann::json j;
-  try {
-    in >> j;
-  } catch (const std::exception& e) {
-    throw std::runtime_error(file.string() + ": not JSON: " + e.what());
-  }
-  auto fail = [&](const std::string& what) {
-    throw std::invalid_argument(file.string() + ": " + what);
-  };
-  if (!j.is_object()) fail("not a saved controller (no JSON object)");
-  if (j.value("controller", std::string()) != "planned_walk")
-    fail("not a planned_walk controller (\"controller\": " +
-         (j.contains("controller") ? j["controller"].dump() : std::string("missing")) + ")");
-  if (j.value("symmetry", std::string("mirrored_planner")) != "mirrored_planner")
-    fail("symmetry " + j["symmetry"].dump() + " is not mirrored_planner, the one this runs");
-  if (!j.contains("parameter_names") || !j["parameter_names"].is_array() ||
-      !j.contains("parameters") || !j["parameters"].is_array())
-    fail("needs the arrays \"parameter_names\" and \"parameters\"");
-  saved_walk s;
-  for (const auto& n : j["parameter_names"]) {
-    if (!n.is_string()) fail("a parameter name is not a string: " + n.dump());
-    s.names.push_back(n.get<std::string>());
-  }
-  for (std::size_t i = 0; i < j["parameters"].size(); ++i) {
-    const auto& v = j["parameters"][i];
-    if (!v.is_number() || !std::isfinite(v.get<double>()))
-      fail("parameter " + std::to_string(i) +
-           (i < s.names.size() ? " (" + s.names[i] + ")" : std::string()) +
-           " is not a finite number: " + v.dump());
-    s.values.push_back(v.get<double>());
-  }
-  if (s.names.size() != s.values.size())
-    fail(std::to_string(s.names.size()) + " parameter names but " +
-         std::to_string(s.values.size()) + " values");
-  for (auto& [k, v] : j.items())
-    if (k != "parameter_names" && k != "parameters") s.info[k] = v;
-  return s;
-}
-
-/// The values of `s` in the order of `names`. A saved "h_max" not in `names` is dropped (a
-/// helper-force controller checked without it); a missing h_max that `names` wants is taken from
-/// the file's "h_max" entry. Every other missing, unknown or repeated name throws, naming it.
-std::vector<double> values_for(const saved_walk& s, const std::vector<std::string>& names,
-                               const fs::path& file) {
-  std::map<std::string, double> by_name;
-  for (std::size_t i = 0; i < s.names.size(); ++i) {
-    if (!by_name.emplace(s.names[i], s.values[i]).second)
-      throw std::invalid_argument(file.string() + ": parameter '" + s.names[i] + "' appears twice");
-    if (s.names[i] != "h_max" && std::find(names.begin(), names.end(), s.names[i]) == names.end())
-      throw std::invalid_argument(file.string() + ": unknown parameter '" + s.names[i] +
-                                  "' = " + std::to_string(s.values[i]) + " (planned_walk has " +
-                                  std::to_string(names.size()) + " parameters, " + names.front() +
-                                  " ... " + names.back() + ")");
-  }
-  std::vector<double> x;
-  for (const std::string& n : names) {
-    const auto it = by_name.find(n);
-    if (it != by_name.end()) {
-      x.push_back(it->second);
-    } else if (n == "h_max" && s.info.contains("h_max") && s.info["h_max"].is_number()) {
-      x.push_back(s.info["h_max"].get<double>());
-    } else {
-      throw std::invalid_argument(file.string() + ": parameter '" + n + "' is missing (has " +
-                                  std::to_string(s.names.size()) + " of the " +
-                                  std::to_string(names.size()) + " parameters)");
-    }
-  }
-  return x;
-}
-
 /// The rollout options of the optimization and the check (2400 Hz, penalty contact).
 rollout_options base_options() {
   return rollout_options{};
@@ -373,7 +276,7 @@ int run(const cli& c) {
   const std::string from = c.replay.empty() ? c.init : c.replay;
   double rate = c.controller_rate;
   if (!c.controller_rate_given && !from.empty()) {
-    const saved_walk s = load_walk(from);
+    const planned_walk_saved s = load_planned_walk(from);
     if (s.info.contains("controller_rate")) {
       const nlohmann::json& r = s.info["controller_rate"];
       if (!r.is_number() || !(r.get<double>() == 0.0 || r.get<double>() > 2.0))
@@ -384,7 +287,7 @@ int run(const cli& c) {
   }
   std::string stance_target = c.stance_target;
   if (!c.stance_target_given && !from.empty()) {
-    const saved_walk s = load_walk(from);
+    const planned_walk_saved s = load_planned_walk(from);
     if (s.info.contains("stance_target")) {
       const nlohmann::json& v = s.info["stance_target"];
       if (!v.is_string() || (v != "planned_landing" && v != "touchdown"))
@@ -396,7 +299,7 @@ int run(const cli& c) {
   // The helper force: on (Sec. 8.2) unless --no-helper or a replayed controller without it.
   bool helper = !c.no_helper;
   if (!c.replay.empty()) {
-    const saved_walk s = load_walk(c.replay);
+    const planned_walk_saved s = load_planned_walk(c.replay);
     if (s.info.contains("helper_force")) {
       if (!s.info["helper_force"].is_boolean())
         throw std::invalid_argument(c.replay + ": helper_force must be true or false, got " +
@@ -418,8 +321,8 @@ int run(const cli& c) {
   for (const parameter_spec& p : bounds.parameters()) x0.push_back(0.5 * (p.lower + p.upper));
   nlohmann::json saved_info = nlohmann::json::object();
   if (!from.empty()) {
-    const saved_walk s = load_walk(from);
-    x0 = values_for(s, names, from);
+    const planned_walk_saved s = load_planned_walk(from);
+    x0 = planned_walk_values(s, names, from);
     saved_info = s.info;
   }
   auto make_space = [&] {
@@ -488,7 +391,9 @@ int run(const cli& c) {
       info["cost_timestep"] = c.cost_timestep;
       info["divergence"] = c.divergence;
       info["command"] = c.command;
-      save_walk(stem + suffix, names, x, info);
+      save_planned_walk(stem + suffix, names,
+                        std::span<const double>(x.data(), static_cast<std::size_t>(x.size())),
+                        info);
     };
     // The distribution's mean, clipped to the bounds: on a new field every iteration the best
     // single sample is partly luck (an easy field), the mean what the search has settled on.

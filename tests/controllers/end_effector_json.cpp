@@ -1,0 +1,164 @@
+// Saved planned_walk controllers (controllers/end_effector/planned_walk_json.hpp): a round trip
+// is exact, values are matched by name (h_max dropped or taken from the file's entry), the options
+// the file records are read back, a saved run of data/wu2010/ binds, and every malformed file is
+// refused naming the file, the field and the value.
+#include <catch2/catch.hpp>
+
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <vector>
+
+#include "gaitsynth/controllers/end_effector/planned_walk_json.hpp"
+#include "gaitsynth/models/wu2010.hpp"
+
+using namespace gaitsynth;
+namespace fs = std::filesystem;
+
+namespace {
+
+fs::path scratch_file(const std::string& name) {
+  const fs::path dir = fs::path(GAITSYNTH_BINARY_DIR) / "planned_walk_json";
+  fs::create_directories(dir);
+  return dir / name;
+}
+
+fs::path write(const std::string& name, const std::string& text) {
+  const fs::path p = scratch_file(name);
+  std::ofstream(p) << text;
+  return p;
+}
+
+std::string message_of(const auto& f) {
+  try {
+    f();
+  } catch (const std::exception& e) {
+    return e.what();
+  }
+  return "(no exception)";
+}
+
+}  // namespace
+
+TEST_CASE("planned_walk JSON: a round trip is exact and values are matched by name",
+          "[controllers][end_effector][json]") {
+  const floating_model m = wu2010_biped();
+  planned_walk_options o;
+  o.helper_force = true;
+  const planned_walk<> c(m, flat_terrain{}, o);
+  const std::vector<std::string> names = c.parameter_names();
+  std::vector<double> x = c.default_parameters();
+  x[0] = 0.1 + 1e-16 * 3;  // digits a short decimal would lose
+  x.back() = 12.345678901234567;
+  nlohmann::ordered_json info;
+  info["cost"] = 35.25;
+  info["controller_rate"] = 600.0;
+  info["stance_target"] = "touchdown";
+  info["helper_force"] = true;
+  const fs::path p = scratch_file("round_trip.json");
+  save_planned_walk(p, names, x, info);
+  const planned_walk_saved s = load_planned_walk(p);
+  CHECK(s.names == names);
+  CHECK(s.values == x);  // bit for bit
+  CHECK(s.info["cost"] == 35.25);
+  CHECK(planned_walk_values(s, names, p) == x);
+  // Without the helper: its h_max is dropped.
+  const planned_walk<> plain(m);
+  const std::vector<double> y = planned_walk_values(s, plain.parameter_names(), p);
+  REQUIRE(y.size() == x.size() - 1);
+  CHECK(std::equal(y.begin(), y.end(), x.begin()));
+  // The options it ran with.
+  const planned_walk_options r = saved_planned_walk_options(s, p);
+  CHECK(r.period == Approx(1.0 / 600.0));
+  CHECK(r.stance_target == stance_foot_target::touchdown);
+  CHECK(r.helper_force);
+  // A file of the plain controller gives a helper controller's h_max from its "h_max" entry.
+  nlohmann::ordered_json info2;
+  info2["h_max"] = 7.5;
+  const fs::path q = scratch_file("plain.json");
+  save_planned_walk(q, plain.parameter_names(), y, info2);
+  const std::vector<double> z = planned_walk_values(load_planned_walk(q), names, q);
+  CHECK(z.back() == 7.5);
+}
+
+TEST_CASE("planned_walk JSON: a saved run of data/wu2010 loads and binds",
+          "[controllers][end_effector][json]") {
+  const fs::path p =
+      fs::path(GAITSYNTH_SOURCE_DIR) / "data/wu2010/runs/f3/wu2010_walk.controller.json";
+  const planned_walk_saved s = load_planned_walk(p);
+  const planned_walk_options o = saved_planned_walk_options(s, p);
+  CHECK(o.stance_target == stance_foot_target::touchdown);
+  CHECK(o.period == Approx(1.0 / 600.0));
+  planned_walk_options with_helper = o;
+  with_helper.helper_force = true;
+  const floating_model m = wu2010_biped();
+  planned_walk<> c(m, flat_terrain{}, with_helper);
+  const std::vector<double> x = planned_walk_values(s, c.parameter_names(), p);
+  CHECK(x.size() == 50);
+  CHECK_NOTHROW(c.bind(x));
+  CHECK(c.h_max() == s.info["h_max"].get<double>());
+}
+
+TEST_CASE("planned_walk JSON: malformed files are refused, named",
+          "[controllers][end_effector][json]") {
+  const floating_model m = wu2010_biped();
+  const planned_walk<> c(m);
+  const std::vector<std::string> names = c.parameter_names();
+  auto load_error = [](const std::string& name, const std::string& text) {
+    const fs::path p = write(name, text);
+    return message_of([&] { (void)load_planned_walk(p); });
+  };
+  CHECK_THAT(load_error("a.json", "{ not json"),
+             Catch::Contains("a.json") && Catch::Contains("not JSON"));
+  CHECK_THAT(load_error("b.json", "[1, 2]"), Catch::Contains("no JSON object"));
+  CHECK_THAT(load_error("c.json", R"({"controller": "fsm"})"),
+             Catch::Contains("not a planned_walk controller") && Catch::Contains("\"fsm\""));
+  CHECK_THAT(load_error("d.json", R"({"controller": "planned_walk", "symmetry": "asymmetric",
+                                      "parameter_names": [], "parameters": []})"),
+             Catch::Contains("symmetry \"asymmetric\""));
+  CHECK_THAT(load_error("e.json", R"({"controller": "planned_walk", "parameters": []})"),
+             Catch::Contains("parameter_names"));
+  CHECK_THAT(load_error("f.json", R"({"controller": "planned_walk",
+                                      "parameter_names": ["omega0.t_e", "omega0.k_sw_plus.along"],
+                                      "parameters": [0.1, null]})"),
+             Catch::Contains("parameter 1 (omega0.k_sw_plus.along)") &&
+                 Catch::Contains("not a finite number: null"));
+  CHECK_THAT(load_error("g.json", R"({"controller": "planned_walk",
+                                      "parameter_names": ["omega0.t_e"], "parameters": [1, 2]})"),
+             Catch::Contains("1 parameter names but 2 values"));
+  CHECK_THAT(message_of([] { (void)load_planned_walk("/no/such/file.json"); }),
+             Catch::Contains("cannot read /no/such/file.json"));
+
+  // Names: unknown, repeated, missing.
+  auto values_error = [&](const std::string& name, const std::vector<std::string>& n,
+                          const std::vector<double>& v) {
+    planned_walk_saved s;
+    s.names = n;
+    s.values = v;
+    return message_of([&] { (void)planned_walk_values(s, names, name); });
+  };
+  CHECK_THAT(values_error("u.json", {"omega0.bogus"}, {2.5}),
+             Catch::Contains("u.json") && Catch::Contains("unknown parameter 'omega0.bogus'") &&
+                 Catch::Contains("2.5"));
+  CHECK_THAT(values_error("r.json", {names[0], names[0]}, {0.1, 0.2}),
+             Catch::Contains("'" + names[0] + "' appears twice"));
+  CHECK_THAT(values_error("m.json", {names[0]}, {0.1}),
+             Catch::Contains("parameter '" + names[1] + "' is missing"));
+
+  // Recorded options.
+  auto option_error = [](const char* key, nlohmann::json v) {
+    planned_walk_saved s;
+    s.info[key] = v;
+    return message_of([&] { (void)saved_planned_walk_options(s, "o.json"); });
+  };
+  CHECK_THAT(option_error("controller_rate", 1.0),
+             Catch::Contains("o.json: controller_rate must be 0 or above 2 Hz, got 1.0"));
+  CHECK_THAT(option_error("controller_rate", "fast"), Catch::Contains("got \"fast\""));
+  CHECK_THAT(option_error("stance_target", "heel"),
+             Catch::Contains("stance_target") && Catch::Contains("\"heel\""));
+  CHECK_THAT(option_error("helper_force", 1),
+             Catch::Contains("helper_force must be true or false"));
+  // A size mismatch on saving.
+  CHECK_THROWS_WITH(save_planned_walk(scratch_file("s.json"), names, std::vector<double>{1.0}, {}),
+                    Catch::Contains("parameter names but 1 values"));
+}
