@@ -272,46 +272,27 @@ int run(const cli& c) {
   height_field_terrain field = training_field(field_base, c.flat);
   const field_ref ground(field);
 
-  // The controller's rate: --controller-rate, else a saved controller's own, else every step.
+  // How the controller runs: the command line's options, else (--init, --replay) what the saved
+  // controller records (controllers/end_effector/planned_walk_json.hpp): its rate and stance
+  // target, and when replaying its helper force.
   const std::string from = c.replay.empty() ? c.init : c.replay;
-  double rate = c.controller_rate;
-  if (!c.controller_rate_given && !from.empty()) {
+  double rate = c.controller_rate;  // Hz; 0: every physics step
+  planned_walk_options po;          // Sec. 8.3's forward walk (r = 0.65 m, t_h = 0.55 s)
+  po.helper_force = !c.no_helper;
+  po.stance_target = c.stance_target == "touchdown" ? stance_foot_target::touchdown
+                                                    : stance_foot_target::planned_landing;
+  if (!from.empty()) {
     const planned_walk_saved s = load_planned_walk(from);
-    if (s.info.contains("controller_rate")) {
-      const nlohmann::json& r = s.info["controller_rate"];
-      if (!r.is_number() || !(r.get<double>() == 0.0 || r.get<double>() > 2.0))
-        throw std::invalid_argument(from + ": controller_rate must be 0 or above 2 Hz, got " +
-                                    r.dump());
-      rate = r.get<double>();
-    }
+    const planned_walk_options saved = saved_planned_walk_options(s, from, po);  // validates
+    if (!c.controller_rate_given && s.info.contains("controller_rate"))
+      rate = s.info["controller_rate"].get<double>();
+    if (!c.stance_target_given) po.stance_target = saved.stance_target;
+    if (!c.replay.empty()) po.helper_force = saved.helper_force;
   }
-  std::string stance_target = c.stance_target;
-  if (!c.stance_target_given && !from.empty()) {
-    const planned_walk_saved s = load_planned_walk(from);
-    if (s.info.contains("stance_target")) {
-      const nlohmann::json& v = s.info["stance_target"];
-      if (!v.is_string() || (v != "planned_landing" && v != "touchdown"))
-        throw std::invalid_argument(from + ": stance_target must be \"planned_landing\" or " +
-                                    "\"touchdown\", got " + v.dump());
-      stance_target = v.get<std::string>();
-    }
-  }
-  // The helper force: on (Sec. 8.2) unless --no-helper or a replayed controller without it.
-  bool helper = !c.no_helper;
-  if (!c.replay.empty()) {
-    const planned_walk_saved s = load_planned_walk(c.replay);
-    if (s.info.contains("helper_force")) {
-      if (!s.info["helper_force"].is_boolean())
-        throw std::invalid_argument(c.replay + ": helper_force must be true or false, got " +
-                                    s.info["helper_force"].dump());
-      helper = s.info["helper_force"].get<bool>();
-    }
-  }
-  planned_walk_options po;  // Sec. 8.3's forward walk (r = 0.65 m, t_h = 0.55 s)
-  po.helper_force = helper;
-  po.stance_target = stance_target == "touchdown" ? stance_foot_target::touchdown
-                                                  : stance_foot_target::planned_landing;
   po.period = rate > 0.0 ? 1.0 / rate : 0.0;
+  const bool helper = po.helper_force;
+  const std::string stance_target =
+      po.stance_target == stance_foot_target::touchdown ? "touchdown" : "planned_landing";
   const walk_controller ctrl(m, ground, po);
   const std::vector<std::string> names = ctrl.parameter_names();
 
