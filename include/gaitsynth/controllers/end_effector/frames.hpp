@@ -16,6 +16,7 @@
 /// ankle sits over the heel box, and the foot link carries both).
 #include <Eigen/Core>
 #include <algorithm>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -42,6 +43,16 @@ struct action_frame {
   std::vector<int> contacts;  ///< contact points of the geometry it is attached to (Sec. 6.3)
   std::string name;
 };
+
+/// Whether a contact point of the geometry `a` is attached to touches (`touching`: one flag per
+/// contact point of the model, sensors::contact_active). Sec. 6.3's first test.
+inline bool frame_touches(const action_frame& a, std::span<const unsigned char> touching) {
+  for (const int c : a.contacts)
+    if (c >= 0 && static_cast<std::size_t>(c) < touching.size() &&
+        touching[static_cast<std::size_t>(c)])
+      return true;
+  return false;
+}
 
 /// A leg for appendix B's null-space knee control: the knee DOF, the body whose origin is the hip
 /// joint, the ankle frame, and the sign of a bending torque.

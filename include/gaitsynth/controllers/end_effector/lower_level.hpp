@@ -105,10 +105,8 @@ inline void pinned_frames(const end_effector_layout& L, const frame_states& curr
                           const frame_states& desired, std::span<const unsigned char> touching,
                           const lower_level_options& opt, std::span<unsigned char> pinned) {
   for (int j = 0; j < L.num_action(); ++j) {
-    bool contact = false;
-    for (const int c : L.action[j].contacts)
-      contact = contact || (static_cast<std::size_t>(c) < touching.size() && touching[c]);
-    pinned[j] = contact && (desired.position[j] - current.position[j]).norm() < opt.eps_p &&
+    pinned[j] = frame_touches(L.action[j], touching) &&
+                (desired.position[j] - current.position[j]).norm() < opt.eps_p &&
                 desired.velocity[j].norm() < opt.eps_pdot;
   }
 }

@@ -401,10 +401,8 @@ class planned_walk {
       if (p.has_tail && t < p.tail_end) return;
       bool touching = false;
       for (const action_frame& a : layout_.action)
-        if (static_cast<std::size_t>(a.link) == link)
-          for (const int c : a.contacts)
-            touching = touching || (static_cast<std::size_t>(c) < s.contact_active.size() &&
-                                    s.contact_active[static_cast<std::size_t>(c)]);
+        touching = touching ||
+                   (static_cast<std::size_t>(a.link) == link && frame_touches(a, s.contact_active));
       if (!touching) return;
       const auto& ws = s.workspace();
       const int b = layout_.link_body[link];
