@@ -19,6 +19,11 @@
 //               [--divergence fall|infinite]
 //   wu2010_walk --resume DIR [--threads N]
 //   wu2010_walk --replay FILE [--check-seconds S] [--out DIR]
+//               [--body normal|inverted_knees|frozen_left_knee]
+//
+// --body (Sec. 9, Fig. 4): the character, Table 3's biped or one of its variants (models/
+// wu2010.hpp): both knees inverted, or the left knee frozen straight. With --replay it runs the
+// unaltered controller on the changed body, as the paper does.
 //
 // Fall guard (ours; the paper's cost has no fall term): a fall ends the rollout early (the
 // rollout's terrain-aware fall test, COM below half its initial height above the terrain under
@@ -125,6 +130,7 @@ struct cli {
   bool no_helper = false;
   std::string divergence = "fall";  // rollout_options::score_divergence (ours)
   bool stance_target_given = false;
+  std::string body = "normal";  // Sec. 9's variants: inverted_knees, frozen_left_knee
   std::string command, out_arg;
   nlohmann::json options;
 };
@@ -184,6 +190,10 @@ cli parse(int argc, char** argv) {
                  "eq. 6's timestep, s: each physics step counts dt / this (the paper's 64 Hz "
                  "step); 0: each physics step counts once")
       ->check(example_cli::in_range(0.0, 1.0));
+  app.add_option("--body", c.body,
+                 "the character: Table 3's biped (normal) or Sec. 9's variants, both knees "
+                 "inverted or the left knee frozen straight")
+      ->check(CLI::IsMember({"normal", "inverted_knees", "frozen_left_knee"}));
   example_cli::parse(app, argc, argv);
   c.controller_rate_given = app.count("--controller-rate") > 0;
   c.stance_target_given = app.count("--stance-target") > 0;
@@ -263,8 +273,16 @@ rollout_options base_options() {
   return rollout_options{};
 }
 
+/// --body's character.
+floating_model character(const std::string& body) {
+  wu2010_biped_options o;
+  if (body == "inverted_knees") o.knees = wu2010_knees::inverted;
+  if (body == "frozen_left_knee") o.frozen_left_knee = true;
+  return wu2010_biped(o);
+}
+
 int run(const cli& c) {
-  const floating_model m = wu2010_biped();
+  const floating_model m = character(c.body);
   const std::string stem = (c.out / "wu2010_walk").string();
   // The training terrain: one field, replaced between CMA iterations, read by the problem's
   // contact and by every controller copy through terrain_ref.
@@ -474,6 +492,7 @@ int run(const cli& c) {
   sum["check_seconds"] = c.check_seconds;
   sum["controller_rate"] = rate;
   sum["stance_target"] = stance_target;
+  sum["body"] = c.body;
   sum["cost_timestep"] = c.cost_timestep;
   sum["h_max"] = h_max;
   sum["helper_force"] = helper;

@@ -2,6 +2,7 @@
 // standing_balance.hpp): the Table 3 biped stands 5 s on flat ground (penalty contact, semi-
 // implicit Euler at 2400 Hz, the QP every step), recovers from a 100 N push of 0.1 s from the
 // front and from behind, and bad input is refused with the value named.
+#include <array>
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <cstdint>
@@ -20,13 +21,17 @@ using namespace gaitsynth;
 
 namespace {
 
-/// Largest horizontal and vertical COM excursion from the start, the last COM, and the joint
-/// rates' step-by-step oscillation (support/joint_rate_chatter.hpp).
+/// Largest horizontal and vertical COM excursion from the start, the last COM, the joint
+/// rates' step-by-step oscillation (support/joint_rate_chatter.hpp), and each knee's range of
+/// angles over the last second.
 struct com_excursion {
   vec3 start = vec3::Zero(), last = vec3::Zero();
   double horizontal = 0.0, vertical = 0.0;
   gaitsynth::testing::joint_rate_chatter chatter;
   bool first = true;
+  std::array<int, 2> knee{-1, -1};  ///< l, r joint DOF indices
+  std::array<double, 2> knee_min{1e9, 1e9}, knee_max{-1e9, -1e9};
+  double settle_time = 4.0;  ///< s, when the knees' last-second range starts
   template <class Observation>
   void observe(const Observation& ob) {
     if (first) start = ob.com;
@@ -36,6 +41,12 @@ struct com_excursion {
     vertical = std::max(vertical, std::abs(ob.com.z() - start.z()));
     const Eigen::VectorXd& v = *ob.v_ptr;
     chatter.add(ob.t, v.tail(v.size() - 6));
+    for (std::size_t i = 0; i < 2; ++i)
+      if (knee[i] >= 0 && ob.t >= settle_time) {
+        const double a = (*ob.q_ptr)[7 + knee[i]];  // after the floating root
+        knee_min[i] = std::min(knee_min[i], a);
+        knee_max[i] = std::max(knee_max[i], a);
+      }
   }
 };
 
@@ -52,6 +63,7 @@ stand_result stand(const floating_model& m, std::vector<push> pushes = {}) {
   auto scratch = make_rollout_scratch(m);
   const auto p = c.gains().to_array();
   stand_result out;
+  out.com.knee = {m.dof_index("lknee"), m.dof_index("rknee")};
   out.r = rollout(m, torque_actuator{}, c, distance_objective(), flat_terrain(),
                   semi_implicit_euler(), p, opt, scratch, out.com);
   return out;
@@ -94,6 +106,46 @@ TEST_CASE("the standing controller recovers from a 100 N push of 0.1 s",
     CHECK(s.com.last.x() == Approx(0.065).margin(0.015));
     CHECK(s.com.chatter.largest_second_difference < 10.0);  // measured 1.7 rad/s
     CHECK(s.com.chatter.longest_alternation < 40);          // measured 1
+  }
+}
+
+TEST_CASE("the unaltered standing controller stands Sec. 9's modified bipeds",
+          "[controllers][end_effector]") {
+  // Sec. 9 (Fig. 4) runs the unaltered forward controller on a biped with inverted knees and on
+  // one with a frozen knee; the same lower level and gains stand both here. The layout reads the
+  // bending sign from the knee's range, so appendix B's knee torque bends inverted knees forward.
+  {
+    const floating_model m = wu2010_biped({.knees = wu2010_knees::inverted});
+    const end_effector_layout L = biped_end_effector_layout(m);
+    REQUIRE(L.legs.size() == 2);
+    CHECK(L.legs[0].bend_sign == -1.0);
+    CHECK(L.legs[1].bend_sign == -1.0);
+    CHECK(biped_end_effector_layout(wu2010_biped()).legs[0].bend_sign == 1.0);
+    const stand_result s = stand(m);
+    REQUIRE(s.r.reason == stop_reason::horizon);
+    CHECK(s.com.vertical < 0.015);
+    // Measured: both knees at -0.035 to -0.037 rad in the last second (the normal biped's at
+    // +0.19; the stance is not a mirror image: the upper body stands ahead of the ankles, over the
+    // middle of the feet). With the bending sign
+    // left at +1 both sat at +0.008 rad, pressed into the limit at 0: straight and singular.
+    for (std::size_t i = 0; i < 2; ++i) {
+      INFO("knee " << i);
+      CHECK(s.com.knee_max[i] < -0.02);
+      CHECK(s.com.knee_min[i] > -0.5);
+    }
+    CHECK(s.com.chatter.longest_alternation < 40);
+  }
+  {
+    const floating_model m = wu2010_biped({.frozen_left_knee = true});
+    const stand_result s = stand(m);
+    REQUIRE(s.r.reason == stop_reason::horizon);
+    CHECK(s.com.vertical < 0.03);
+    // The frozen left knee stays at its angle (0) within the limit spring's deflection under the
+    // knee's torque limit (< 6 mrad); the right one bends as on the normal biped.
+    CHECK(s.com.knee_min[0] > -0.006);
+    CHECK(s.com.knee_max[0] < 0.006);
+    CHECK(s.com.knee_min[1] > 0.05);
+    CHECK(s.com.chatter.longest_alternation < 40);
   }
 }
 

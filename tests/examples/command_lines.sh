@@ -55,6 +55,8 @@ case "$mode" in
         expect 2 "--divergence: nan not in \{fall,infinite\}" -- "$exe" --divergence nan
         expect 2 "--cost-timestep: must be in .*, got -1" -- "$exe" --cost-timestep -1
         expect 2 "--cost-timestep: must be in .*, got nan" -- "$exe" --cost-timestep nan
+        expect 2 "--body: bird not in \{normal,inverted_knees,frozen_left_knee\}" -- \
+          "$exe" --body bird
       fi
       if grep -q -- "--seed" <<<"$help"; then
         expect 2 "--seed: must be in .*, got -3" -- "$exe" --seed -3

@@ -2,6 +2,7 @@
 #include "gaitsynth/models/wu2010.hpp"
 
 #include <catch2/catch.hpp>
+#include <limits>
 
 #include "models/model_checks.hpp"
 
@@ -75,4 +76,57 @@ TEST_CASE("wu2010_biped contacts, mirror map and limits", "[models][wu2010]") {
   CHECK(standing_height(m) == Approx(1.91));
   models_test::check_mirror(m, 7);
   models_test::check_limit_stability(m);
+}
+
+TEST_CASE("wu2010_biped's Section 9 variants: inverted knees, a frozen left knee",
+          "[models][wu2010]") {
+  const floating_model normal = wu2010_biped();
+  const floating_model inv = wu2010_biped({.knees = wu2010_knees::inverted});
+  CHECK(inv.name == "wu2010_biped_inverted_knees");
+  for (const char* k : {"lknee", "rknee"}) {
+    INFO(k);
+    const joint_limit& a = normal.dofs[normal.dof_index(k)].limit;
+    const joint_limit& b = inv.dofs[inv.dof_index(k)].limit;
+    CHECK(a.lower == 0.0);
+    CHECK(a.upper == Approx(2.4));
+    CHECK(b.lower == -a.upper);  // the same range, bending forward
+    CHECK(b.upper == -a.lower);
+    CHECK(b.stiffness == a.stiffness);
+    CHECK(b.damping == a.damping);
+  }
+  CHECK(inv.total_mass() == normal.total_mass());
+  models_test::check_mirror(inv, 7);
+  models_test::check_limit_stability(inv);
+
+  const floating_model frozen = wu2010_biped({.frozen_left_knee = true, .frozen_knee_angle = 0.1});
+  CHECK(frozen.name == "wu2010_biped_frozen_left_knee");
+  const joint_limit& lk = frozen.dofs[frozen.dof_index("lknee")].limit;
+  const joint_limit& nk = normal.dofs[normal.dof_index("lknee")].limit;
+  CHECK(lk.lower == 0.1);
+  CHECK(lk.upper == 0.1);
+  CHECK(lk.stiffness == Approx(100 * nk.stiffness));
+  CHECK(lk.damping == Approx(10 * nk.damping));
+  // 700 N m, the knee's torque limit, deflects it by less than 6 mrad.
+  CHECK(700.0 / lk.stiffness < 0.006);
+  const joint_limit& rk = frozen.dofs[frozen.dof_index("rknee")].limit;
+  CHECK(rk.lower == nk.lower);
+  CHECK(rk.upper == nk.upper);
+  CHECK(rk.stiffness == nk.stiffness);
+  models_test::check_limit_stability(frozen);
+  CHECK(wu2010_biped({.knees = wu2010_knees::inverted, .frozen_left_knee = true}).name ==
+        "wu2010_biped_inverted_knees_frozen_left_knee");
+
+  // A frozen angle outside the knee's range, or a bad factor, is refused with the value named.
+  CHECK_THROWS_WITH(wu2010_biped({.frozen_left_knee = true, .frozen_knee_angle = -0.2}),
+                    Catch::Contains("frozen_knee_angle") && Catch::Contains("-0.2"));
+  CHECK_THROWS_WITH(
+      wu2010_biped(
+          {.knees = wu2010_knees::inverted, .frozen_left_knee = true, .frozen_knee_angle = 0.2}),
+      Catch::Contains("frozen_knee_angle") && Catch::Contains("0.2"));
+  CHECK_THROWS_WITH(wu2010_biped({.frozen_left_knee = true, .frozen_stiffness_factor = 0.0}),
+                    Catch::Contains("frozen_stiffness_factor"));
+  CHECK_THROWS_WITH(
+      wu2010_biped({.frozen_left_knee = true,
+                    .frozen_damping_factor = std::numeric_limits<double>::quiet_NaN()}),
+      Catch::Contains("frozen_damping_factor") && Catch::Contains("nan"));
 }

@@ -23,17 +23,44 @@
 /// the foot: we store the foot as diag(0.001, 0.03, 0.03) in our x-forward frame. Contacts: each
 /// foot carries a heel box and a toe box with a gap between them (Fig. 9), 4 bottom corners each
 /// (roles sole and toe) and 2 toe-top points.
+///
+/// Section 9's morphology changes (Fig. 4), for running an unaltered controller on another body:
+/// wu2010_biped_options::knees = inverted bends both knees forward (range [-2.4, 0] instead of
+/// [0, 2.4]; the end-effector layout reads the bending sign from the range), and
+/// frozen_left_knee sets the left knee's range to zero ("setting the joint movement range to
+/// zero") at frozen_knee_angle: a limit spring 100 times the knee's, which holds it within 6 mrad
+/// against the knee's whole 700 N m. The variants keep the name "wu2010_biped" with a suffix.
 #include <Eigen/Core>
 #include <array>
+#include <cmath>
 #include <string>
 
+#include "gaitsynth/error.hpp"
 #include "gaitsynth/model/model_builder.hpp"
 #include "gaitsynth/models/detail/character_parts.hpp"
 #include "gaitsynth/models/detail/humanoid30.hpp"
 
 namespace gaitsynth {
 
-inline floating_model wu2010_biped() {
+/// Which way the knees bend (Section 9, Fig. 4).
+enum class wu2010_knees {
+  normal,   ///< flexion positive, range [0, 2.4] rad (as the 30-DOF humanoid's)
+  inverted  ///< bending forward: range [-2.4, 0] rad
+};
+
+struct wu2010_biped_options {
+  wu2010_knees knees = wu2010_knees::normal;
+  bool frozen_left_knee = false;   ///< Sec. 9: the left knee's range set to zero
+  double frozen_knee_angle = 0.0;  ///< rad, where the frozen knee is held (within its range)
+  /// The frozen knee's limit spring and damper as multiples of the knee's (k_scale x 1000 N m/rad,
+  /// x 20 N m s/rad): 100 x k holds 700 N m within 6 mrad; 10 x d keeps the explicit step of the
+  /// shank and foot (0.67 kg m^2 about the knee) well damped at 2400 Hz (h d / I = 0.2).
+  double frozen_stiffness_factor = 100.0, frozen_damping_factor = 10.0;
+};
+
+/// \throws std::invalid_argument naming a frozen knee angle outside the knee's range or a
+/// non-finite or non-positive factor.
+inline floating_model wu2010_biped(const wu2010_biped_options& opt = {}) {
   using namespace detail::characters;
   // Geometry not in Table 3 (docs/models.md).
   constexpr double hip_radius = 0.15;     // Table 3
@@ -64,7 +91,39 @@ inline floating_model wu2010_biped() {
                                 {"waist_y", 1, -0.5, 1.2, 1000, 50, 1600},
                                 {"waist_z", 2, -0.6, 0.6, 1000, 50, 1600}};
 
-  model_builder<floating_root> b("wu2010_biped");
+  const bool inverted = opt.knees == wu2010_knees::inverted;
+  const dof_row knee_row =
+      inverted ? dof_row{knee_rows[0].name,        knee_rows[0].axis,      -knee_rows[0].upper,
+                         -knee_rows[0].lower,      knee_rows[0].stiffness, knee_rows[0].damping,
+                         knee_rows[0].torque_limit}
+               : knee_rows[0];
+  if (opt.frozen_left_knee) {
+    check_argument(std::isfinite(opt.frozen_knee_angle) &&
+                       opt.frozen_knee_angle >= knee_row.lower &&
+                       opt.frozen_knee_angle <= knee_row.upper,
+                   "wu2010_biped: frozen_knee_angle must lie in the knee's range [", knee_row.lower,
+                   ", ", knee_row.upper, "], got ", opt.frozen_knee_angle);
+    check_argument(std::isfinite(opt.frozen_stiffness_factor) && opt.frozen_stiffness_factor > 0,
+                   "wu2010_biped: frozen_stiffness_factor must be finite and > 0, got ",
+                   opt.frozen_stiffness_factor);
+    check_argument(std::isfinite(opt.frozen_damping_factor) && opt.frozen_damping_factor > 0,
+                   "wu2010_biped: frozen_damping_factor must be finite and > 0, got ",
+                   opt.frozen_damping_factor);
+  }
+  const auto knee_dof = [&](const std::string& S, bool right) {
+    dof_spec d = sided(knee_row, S, right, 700);
+    if (!right && opt.frozen_left_knee) {
+      d.limit.lower = d.limit.upper = opt.frozen_knee_angle;
+      d.limit.stiffness *= opt.frozen_stiffness_factor;
+      d.limit.damping *= opt.frozen_damping_factor;
+    }
+    return d;
+  };
+  std::string name = "wu2010_biped";
+  if (inverted) name += "_inverted_knees";
+  if (opt.frozen_left_knee) name += "_frozen_left_knee";
+
+  model_builder<floating_root> b(name);
   b.add_body({.name = "hip",
               .mass = 8.8,
               .inertia = Eigen::Vector3d(0.1, 0.1, 0.1).asDiagonal(),
@@ -91,7 +150,7 @@ inline floating_model wu2010_biped() {
                 .mass = 4.352,
                 .com = {0, 0, -0.5 * shank},
                 .inertia = Eigen::Vector3d(0.04, 0.04, 0.01).asDiagonal(),
-                .dofs = {sided(knee_rows[0], S, right, 700)},
+                .dofs = {knee_dof(S, right)},
                 .shapes = {capsule({0, 0, -0.045}, {0, 0, -shank + 0.045}, 0.045)},
                 .length = shank,
                 .segment_end = {0, 0, -shank}});

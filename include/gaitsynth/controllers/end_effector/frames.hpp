@@ -80,7 +80,8 @@ struct end_effector_layout {
 /// The frames of Sec. 5 on a biped whose feet carry heel ("sole") and toe contact points, as
 /// models/wu2010.hpp's: LA at the upper body's COM; per foot an L frame at the ankle (the foot
 /// body's origin), LR frames at the two front toe corners and at the middle of the heel's back
-/// edge, all on the sole. Knee control for `knee` DOFs, bending positive (their range starts at 0).
+/// edge, all on the sole. Knee control for `knee` DOFs, bending toward the larger side of their
+/// range: positive for the range [0, 2.4], negative for inverted knees (Sec. 9, [-2.4, 0]).
 /// \throws std::invalid_argument naming a body, DOF or contact the model lacks.
 template <root_joint Root>
 end_effector_layout biped_end_effector_layout(const model<Root>& m,
@@ -134,7 +135,8 @@ end_effector_layout biped_end_effector_layout(const model<Root>& m,
     const int thigh = m.body_index(S + "thigh");
     check_argument(knee >= 0 && thigh >= 0, "biped_end_effector_layout: no DOF '", S + "knee",
                    "' or body '", S + "thigh", "'");
-    L.legs.push_back({knee, thigh, ankle, 1.0});
+    const joint_limit& range = m.dofs[static_cast<std::size_t>(knee)].limit;
+    L.legs.push_back({knee, thigh, ankle, range.upper >= -range.lower ? 1.0 : -1.0});
   }
   return L;
 }
