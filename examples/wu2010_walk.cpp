@@ -19,7 +19,7 @@
 //               [--divergence fall|infinite]
 //   wu2010_walk --resume DIR [--threads N]
 //   wu2010_walk --replay FILE [--check-seconds S] [--out DIR]
-//               [--body normal|inverted_knees|frozen_left_knee]
+//               [--body normal|inverted_knees|frozen_left_knee] [--push-force N]
 //
 // --body (Sec. 9, Fig. 4): the character, Table 3's biped or one of its variants (models/
 // wu2010.hpp): both knees inverted, or the left knee frozen straight. With --replay it runs the
@@ -61,7 +61,11 @@
 // The check (after the optimization, or of --replay FILE / --init FILE with --iterations 0): the
 // controller WITHOUT the helper force (Sec. 8.2: the paper's controller after the optimization;
 // h_max is dropped) walks --check-seconds (20 s) on flat ground and on 10 unseen random height
-// fields (seeds 9001..9010), with the library's stall rule (rollout/walk_check.hpp).
+// fields (seeds 9001..9010), with the library's stall rule (rollout/walk_check.hpp), and on flat
+// ground with pushes (Sec. 9: "it can sustain sideways or forward pushes of 350 N with 0.1 s
+// durations"): --push-force newtons (350; 0 skips them) for 0.1 s on the upper body's COM every 4 s
+// from 4 s on, one trial per direction (forward, backward, left, right), passed when it is still
+// walking forward at the end (rollout/push_test.hpp).
 //
 // Writes DIR/wu2010_walk.controller.json (parameter names and values, h_max, cost, command),
 // .mean.json (CMA-ES's mean, clipped to the bounds, in the same format: --replay takes it),
@@ -99,6 +103,7 @@
 #include "gaitsynth/optimizers/minimize.hpp"
 #include "gaitsynth/rollout/problem.hpp"
 #include "gaitsynth/rollout/problem_cost.hpp"
+#include "gaitsynth/rollout/push_test.hpp"
 #include "gaitsynth/rollout/rollout.hpp"
 #include "gaitsynth/rollout/walk_check.hpp"
 #include "gaitsynth/synthesis/wu2010_search_space.hpp"
@@ -131,6 +136,7 @@ struct cli {
   std::string divergence = "fall";  // rollout_options::score_divergence (ours)
   bool stance_target_given = false;
   std::string body = "normal";  // Sec. 9's variants: inverted_knees, frozen_left_knee
+  double push_force = 350.0;    // N, Sec. 9
   std::string command, out_arg;
   nlohmann::json options;
 };
@@ -194,6 +200,10 @@ cli parse(int argc, char** argv) {
                  "the character: Table 3's biped (normal) or Sec. 9's variants, both knees "
                  "inverted or the left knee frozen straight")
       ->check(CLI::IsMember({"normal", "inverted_knees", "frozen_left_knee"}));
+  app.add_option("--push-force", c.push_force,
+                 "the check's pushes, N for 0.1 s every 4 s, each direction its own walk (Sec. 9: "
+                 "350; 0: none)")
+      ->check(example_cli::in_range(0.0, 1e5));
   example_cli::parse(app, argc, argv);
   c.controller_rate_given = app.count("--controller-rate") > 0;
   c.stance_target_given = app.count("--stance-target") > 0;
@@ -479,6 +489,29 @@ int run(const cli& c) {
     per_field.push_back(
         {{"seed", s}, {"verdict", verdict(w)}, {"time", w.seconds}, {"distance", w.distance}});
   }
+  // Sec. 9's pushes on flat ground, one walk per direction.
+  nlohmann::ordered_json pushes = nlohmann::ordered_json::array();
+  if (c.push_force > 0.0) {
+    field = training_field(0, true);
+    rollout_options pushed = check;
+    pushed.initial_state = start_on(m, ground);
+    pushed.record = nullptr;
+    const push_protocol proto{.duration = c.check_seconds, .period = 4.0, .push_duration = 0.1};
+    const std::pair<const char*, vec3> directions[] = {{"forward", vec3(1, 0, 0)},
+                                                       {"backward", vec3(-1, 0, 0)},
+                                                       {"left", vec3(0, 1, 0)},
+                                                       {"right", vec3(0, -1, 0)}};
+    for (const auto& [name, d] : directions) {
+      const push_trial t =
+          push_trial_run(m, torque_actuator{}, plain, ground, semi_implicit_euler{}, px, pushed,
+                         m.body_index("upper_body"), c.push_force * d, proto);
+      pushes.push_back({{"direction", name},
+                        {"force", c.push_force},
+                        {"passed", t.passed},
+                        {"time", t.result.time},
+                        {"final_speed", t.final_speed}});
+    }
+  }
   nlohmann::ordered_json sum;
   sum["cost"] = best_cost;
   sum["flat_verdict"] = verdict(flat);
@@ -489,6 +522,7 @@ int run(const cli& c) {
   sum["fields_walked"] = fields_walked;
   sum["fields"] = 10;
   sum["field_checks"] = per_field;
+  sum["pushes"] = pushes;
   sum["check_seconds"] = c.check_seconds;
   sum["controller_rate"] = rate;
   sum["stance_target"] = stance_target;
