@@ -20,6 +20,14 @@
 //   wu2010_walk --resume DIR [--threads N]
 //   wu2010_walk --replay FILE [--check-seconds S] [--out DIR]
 //               [--body normal|inverted_knees|frozen_left_knee] [--push-force N]
+//               [--terrain-blind]
+//
+// --terrain-blind (Sec. 4, issue 12's claim 3): plan without sampling the terrain (the swing
+// path over the stance foot's ground plane, planner_setup::terrain_awareness = false; recorded
+// in the saved controller, which --replay follows unless given). The
+// check reports each field's swing clearance (analysis/swing_clearance.hpp: the median of the
+// swings' peak heights of the lowest sole point over the terrain), so a controller replayed with
+// and without it shows what the sampling changes.
 //
 // --body (Sec. 9, Fig. 4): the character, Table 3's biped or one of its variants (models/
 // wu2010.hpp): both knees inverted, or the left knee frozen straight. With --replay it runs the
@@ -88,6 +96,7 @@
 
 #include "command_line.hpp"
 #include "gaitsynth/actuators/torque.hpp"
+#include "gaitsynth/analysis/swing_clearance.hpp"
 #include "gaitsynth/contact/height_field_terrain.hpp"
 #include "gaitsynth/contact/terrain_ref.hpp"
 #include "gaitsynth/controllers/end_effector/planned_walk.hpp"
@@ -137,6 +146,8 @@ struct cli {
   bool stance_target_given = false;
   std::string body = "normal";  // Sec. 9's variants: inverted_knees, frozen_left_knee
   double push_force = 350.0;    // N, Sec. 9
+  bool terrain_blind = false;   // planner_setup::terrain_awareness = false
+  bool terrain_blind_given = false;
   std::string command, out_arg;
   nlohmann::json options;
 };
@@ -204,9 +215,12 @@ cli parse(int argc, char** argv) {
                  "the check's pushes, N for 0.1 s every 4 s, each direction its own walk (Sec. 9: "
                  "350; 0: none)")
       ->check(example_cli::in_range(0.0, 1e5));
+  app.add_flag("--terrain-blind", c.terrain_blind,
+               "plan without sampling the terrain (the stance foot's ground plane)");
   example_cli::parse(app, argc, argv);
   c.controller_rate_given = app.count("--controller-rate") > 0;
   c.stance_target_given = app.count("--stance-target") > 0;
+  c.terrain_blind_given = app.count("--terrain-blind") > 0;
   if (!resume.empty()) {
     example_cli::reparse_recorded(app, argv[0], resume, {"threads"});
     // Runs from before --cost-timestep existed summed eq. 6 per physics step.
@@ -283,6 +297,14 @@ rollout_options base_options() {
   return rollout_options{};
 }
 
+/// The median of `x` (m), null when empty (a walk that fell before a complete swing).
+nlohmann::ordered_json median_or_null(std::vector<double> x) {
+  if (x.empty()) return nullptr;
+  std::sort(x.begin(), x.end());
+  const std::size_t h = x.size() / 2;
+  return x.size() % 2 ? x[h] : 0.5 * (x[h - 1] + x[h]);
+}
+
 /// --body's character.
 floating_model character(const std::string& body) {
   wu2010_biped_options o;
@@ -306,6 +328,7 @@ int run(const cli& c) {
   const std::string from = c.replay.empty() ? c.init : c.replay;
   double rate = c.controller_rate;  // Hz; 0: every physics step
   planned_walk_options po;          // Sec. 8.3's forward walk (r = 0.65 m, t_h = 0.55 s)
+  bool terrain_blind = c.terrain_blind;
   po.helper_force = !c.no_helper;
   po.stance_target = c.stance_target == "touchdown" ? stance_foot_target::touchdown
                                                     : stance_foot_target::planned_landing;
@@ -315,9 +338,13 @@ int run(const cli& c) {
     if (!c.controller_rate_given && s.info.contains("controller_rate"))
       rate = s.info["controller_rate"].get<double>();
     if (!c.stance_target_given) po.stance_target = saved.stance_target;
+    if (!c.terrain_blind_given && s.info.contains("terrain_blind") &&
+        s.info["terrain_blind"].is_boolean())
+      terrain_blind = s.info["terrain_blind"].get<bool>();
     if (!c.replay.empty()) po.helper_force = saved.helper_force;
   }
   po.period = rate > 0.0 ? 1.0 / rate : 0.0;
+  po.setup.terrain_awareness = !terrain_blind;
   const bool helper = po.helper_force;
   const std::string stance_target =
       po.stance_target == stance_foot_target::touchdown ? "touchdown" : "planned_landing";
@@ -397,6 +424,7 @@ int run(const cli& c) {
       info["fall_penalty"] = c.fall_penalty;
       info["controller_rate"] = rate;
       info["stance_target"] = stance_target;
+      info["terrain_blind"] = terrain_blind;
       info["cost_timestep"] = c.cost_timestep;
       info["divergence"] = c.divergence;
       info["command"] = c.command;
@@ -483,11 +511,22 @@ int run(const cli& c) {
   save_csv(stem + ".csv", tr);
   int fields_walked = 0;
   nlohmann::ordered_json per_field = nlohmann::ordered_json::array();
+  std::vector<double> clearances;  // every field's swings, both feet
   for (std::uint64_t s = 9001; s <= 9010; ++s) {
-    const walk_check w = walk_on(random_height_field({}, s), nullptr);
+    trajectory field_tr;
+    const walk_check w = walk_on(random_height_field({}, s), &field_tr);
     fields_walked += w.walked ? 1 : 0;
-    per_field.push_back(
-        {{"seed", s}, {"verdict", verdict(w)}, {"time", w.seconds}, {"distance", w.distance}});
+    std::vector<double> peaks;
+    for (const char* foot : {"lfoot", "rfoot"})
+      for (const foot_swing& sw : swing_clearance(m, field_tr, ground, foot).swings)
+        peaks.push_back(sw.peak_clearance);
+    clearances.insert(clearances.end(), peaks.begin(), peaks.end());
+    per_field.push_back({{"seed", s},
+                         {"verdict", verdict(w)},
+                         {"time", w.seconds},
+                         {"distance", w.distance},
+                         {"swings", peaks.size()},
+                         {"median_swing_clearance", median_or_null(peaks)}});
   }
   // Sec. 9's pushes on flat ground, one walk per direction.
   nlohmann::ordered_json pushes = nlohmann::ordered_json::array();
@@ -520,6 +559,8 @@ int run(const cli& c) {
   sum["flat_speed"] = flat.average_speed;
   sum["flat_check_cost"] = flat.cost;
   sum["fields_walked"] = fields_walked;
+  sum["median_swing_clearance"] = median_or_null(clearances);  // m, over the fields' swings
+  sum["terrain_blind"] = terrain_blind;
   sum["fields"] = 10;
   sum["field_checks"] = per_field;
   sum["pushes"] = pushes;
