@@ -20,7 +20,12 @@
 //   wu2010_walk --resume DIR [--threads N]
 //   wu2010_walk --replay FILE [--check-seconds S] [--out DIR]
 //               [--body normal|inverted_knees|frozen_left_knee] [--push-force N]
-//               [--terrain-blind]
+//               [--terrain-blind] [--helper-weight W]
+//
+// --helper-weight (eq. 7's w_h, default Sec. 8.3's 5e-3 per N per timestep): Sec. 8.2's
+// continuation, "restart the optimization with a larger value for w_h after the optimization
+// approximately converges to an infeasible solution" (h_max > 0), e.g. from that run's best with
+// --init.
 //
 // --terrain-blind (Sec. 4, issue 12's claim 3): plan without sampling the terrain (the swing
 // path over the stance foot's ground plane, planner_setup::terrain_awareness = false; recorded
@@ -148,6 +153,7 @@ struct cli {
   double push_force = 350.0;    // N, Sec. 9
   bool terrain_blind = false;   // planner_setup::terrain_awareness = false
   bool terrain_blind_given = false;
+  double helper_weight = 5e-3;  // eq. 7's w_h (Sec. 8.3)
   std::string command, out_arg;
   nlohmann::json options;
 };
@@ -215,6 +221,10 @@ cli parse(int argc, char** argv) {
                  "the check's pushes, N for 0.1 s every 4 s, each direction its own walk (Sec. 9: "
                  "350; 0: none)")
       ->check(example_cli::in_range(0.0, 1e5));
+  app.add_option("--helper-weight", c.helper_weight,
+                 "eq. 7's w_h, per N of h_max per timestep (Sec. 8.3: 5e-3; larger for Sec. "
+                 "8.2's continuation)")
+      ->check(example_cli::in_range(0.0, 1e6));
   app.add_flag("--terrain-blind", c.terrain_blind,
                "plan without sampling the terrain (the stance foot's ground plane)");
   example_cli::parse(app, argc, argv);
@@ -373,6 +383,7 @@ int run(const cli& c) {
 
   wu2010_objective_options cost_options;
   cost_options.timestep = c.cost_timestep;
+  cost_options.helper.w_h = c.helper_weight;
   rollout_options opt = base_options();
   opt.initial_state = start_on(m, ground);
   opt.score_divergence = c.divergence == "fall";
@@ -425,6 +436,7 @@ int run(const cli& c) {
       info["controller_rate"] = rate;
       info["stance_target"] = stance_target;
       info["terrain_blind"] = terrain_blind;
+      info["helper_weight"] = c.helper_weight;
       info["cost_timestep"] = c.cost_timestep;
       info["divergence"] = c.divergence;
       info["command"] = c.command;

@@ -58,6 +58,7 @@ case "$mode" in
         expect 2 "--body: bird not in \{normal,inverted_knees,frozen_left_knee\}" -- \
           "$exe" --body bird
         expect 2 "--push-force: must be in .*, got -350" -- "$exe" --push-force -350
+        expect 2 "--helper-weight: must be in .*, got -1" -- "$exe" --helper-weight -1
       fi
       if grep -q -- "--seed" <<<"$help"; then
         expect 2 "--seed: must be in .*, got -3" -- "$exe" --seed -3
