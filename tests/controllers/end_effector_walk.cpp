@@ -52,6 +52,9 @@ struct walk_log {
     std::int64_t half_cycle = -1, plans_made = 0;
     stance_side stance = stance_side::left;
     int discrete = -1;
+    task_goal goal;
+    vec2 com_target = vec2::Zero();  ///< Sec. 8.1's c_k in the report
+    vec3 com = vec3::Zero();         ///< sensed as the half-cycle began
   };
   std::vector<plan_event> plans;
   std::int64_t last_seen = -1;
@@ -72,8 +75,12 @@ struct walk_log {
     if (st.plans_made != last_seen) {
       last_seen = st.plans_made;
       if (plans.size() < plans.capacity())  // no allocation while observing
-        plans.push_back({ob.t, st.last_plan_time, st.half_cycle_start, st.half_cycle, st.plans_made,
-                         st.stance, ob.controller_state()});
+        plans.push_back(
+            {ob.t, st.last_plan_time, st.half_cycle_start, st.half_cycle, st.plans_made, st.stance,
+             ob.controller_state(), st.plan()->goal,
+             vec2(st.report[planned_walk_report_layout::for_action_frames(8).com_target],
+                  st.report[planned_walk_report_layout::for_action_frames(8).com_target + 1]),
+             ob.com});
     }
   }
 };
@@ -279,6 +286,45 @@ TEST_CASE("planned_walk: plans at t = 0, t_h, 2 t_h, ... and swaps stance and sw
   REQUIRE(log2.plans.size() == 2);
   CHECK(log2.plans[0].stance == stance_side::right);
   CHECK(log2.plans[1].stance == stance_side::left);
+}
+
+TEST_CASE("planned_walk: goal_schedule changes G at run time, from the half-cycle it names",
+          "[controllers][end_effector][walk]") {
+  const floating_model m = wu2010_biped();
+  planned_walk_options o;
+  o.goal_schedule = {{1, {0.2, 0.1, 0.5}}, {3, {0.0, 0.0, 0.0}}};
+  const planned_walk<> c(m, flat_terrain{}, o);
+  const double t_h = c.half_cycle_duration();
+  walk_log log;
+  (void)walk(m, c, flat_terrain{}, 3.5 * t_h, false, log);
+  REQUIRE(log.plans.size() == 4);
+  const task_goal expected[] = {o.goal, {0.2, 0.1, 0.5}, {0.2, 0.1, 0.5}, {0.0, 0.0, 0.0}};
+  for (std::size_t k = 0; k < 4; ++k) {
+    INFO("half-cycle " << k);
+    const walk_log::plan_event& e = log.plans[k];
+    CHECK(e.goal.facing == expected[k].facing);
+    CHECK(e.goal.movement == expected[k].movement);
+    CHECK(e.goal.step_length == expected[k].step_length);
+    // Sec. 8.1's COM target follows the half-cycle's goal: c^ + R_z(psi_m) (r x).
+    CHECK(e.com_target.x() ==
+          Approx(e.com.x() + expected[k].step_length * std::cos(expected[k].movement)));
+    CHECK(
+        e.com_target.y() ==
+        Approx(e.com.y() + expected[k].step_length * std::sin(expected[k].movement)).margin(1e-12));
+  }
+
+  // Out of order, negative or non-finite entries are refused, naming the entry and the value.
+  planned_walk_options bad;
+  bad.goal_schedule = {{2, {}}, {2, {}}};
+  CHECK_THAT(message_of([&] { planned_walk<>(m, flat_terrain{}, bad); }),
+             Catch::Contains("goal_schedule[1].from_half_cycle") && Catch::Contains("got 2"));
+  bad.goal_schedule = {{-1, {}}};
+  CHECK_THAT(message_of([&] { planned_walk<>(m, flat_terrain{}, bad); }),
+             Catch::Contains("goal_schedule[0]") && Catch::Contains("-1"));
+  bad.goal_schedule = {{0, {}}, {4, {std::numeric_limits<double>::quiet_NaN(), 0.0, 0.65}}};
+  CHECK_THAT(
+      message_of([&] { planned_walk<>(m, flat_terrain{}, bad); }),
+      Catch::Contains("goal_schedule[1]") && Catch::Contains("facing") && Catch::Contains("nan"));
 }
 
 TEST_CASE("planned_walk plans on the terrain it holds, or blind",

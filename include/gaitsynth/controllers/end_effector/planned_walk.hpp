@@ -9,13 +9,14 @@
 /// t_h): half-cycle k starts at t_0 + k t_h, t_0 the time of the first command; at the first
 /// command at or after that time (1e-9 s tolerance) the controller swaps stance and swing (k even:
 /// options.first_stance stands; k odd: the other foot) and plans it with plan_half_cycle from the
-/// goal G, Omega_{k mod 2}, the current poses of the upper body (its planned point) and feet, the
-/// previous half-cycle's plan (its swing becomes this stance foot's tail; its target gives
-/// dq'_ub,eh) and the terrain. Every command then queries the plan at t - (t_0 + k t_h) and runs
-/// the lower level with Pi_{k mod 2}. The first half-cycle has no previous plan: its stance foot
-/// stays where it stands and psi_f' is the upper body's yaw. options.stance_target = touchdown
-/// (ours) re-targets the stance foot, at its first ground contact after the tail, to where it is
-/// (half_cycle_plan.hpp's touchdown_stance_target) instead of the previous swing's planned end.
+/// goal G (options.goal_schedule's for half-cycle k), Omega_{k mod 2}, the current poses of the
+/// upper body (its planned point) and feet, the previous half-cycle's plan (its swing becomes this
+/// stance foot's tail; its target gives dq'_ub,eh) and the terrain. Every command then queries the
+/// plan at t - (t_0 + k t_h) and runs the lower level with Pi_{k mod 2}. The first half-cycle has
+/// no previous plan: its stance foot stays where it stands and psi_f' is the upper body's yaw.
+/// options.stance_target = touchdown (ours) re-targets the stance foot, at its first ground contact
+/// after the tail, to where it is (half_cycle_plan.hpp's touchdown_stance_target) instead of the
+/// previous swing's planned end.
 ///
 /// Terrain: a controller sees no terrain through sensors (controllers/sensors.hpp), so it holds a
 /// copy of one, given at construction (template parameter T, default flat_terrain). It must be
@@ -85,6 +86,12 @@ enum class planned_walk_symmetry {
   mirrored,          ///< Omega_1 = mirrored(Omega_0), Pi_1 = Pi_0 (37)
 };
 
+/// A goal change at run time: `goal` applies from half-cycle `from_half_cycle` on.
+struct scheduled_goal {
+  std::int64_t from_half_cycle = 0;
+  task_goal goal;
+};
+
 struct planned_walk_options {
   /// s between commands; 0: every physics step. The paper runs at 64 Hz (appendix C); our lower
   /// level is not stable with commands held over 1/64 s yet (standing_balance.hpp,
@@ -92,6 +99,11 @@ struct planned_walk_options {
   double period = 0.0;
   /// G: Sec. 8.3's forward walk (r = 0.65 m) along +x, facing +x.
   task_goal goal{0.0, 0.0, 0.65};
+  /// Goal changes at run time (Sec. 9: "With a cyclical controller, we can also use the task goal
+  /// G for small (+-15 deg) facing and movement direction changes"; a larger turn is a sequence of
+  /// small ones). Half-cycle k plans with the goal of the last entry whose from_half_cycle <= k,
+  /// before the first entry with `goal`. Entries in strictly increasing from_half_cycle >= 0.
+  std::vector<scheduled_goal> goal_schedule;
   planner_setup setup{};  ///< t_h = 0.55 s (Sec. 8.3) and the character's geometry
   /// Omega's components outside the parameter vector (l of the control points, v of the upper
   /// body's, alpha_a), and the Table 1 components default_parameters() starts from.
@@ -148,6 +160,21 @@ class planned_walk {
     check_argument(std::isfinite(opt_.period) && opt_.period >= 0.0,
                    "planned_walk: period must be finite and >= 0 s, got ", opt_.period);
     validate(opt_.goal);
+    for (std::size_t i = 0; i < opt_.goal_schedule.size(); ++i) {
+      const scheduled_goal& e = opt_.goal_schedule[i];
+      check_argument(e.from_half_cycle >= 0 &&
+                         (i == 0 || e.from_half_cycle > opt_.goal_schedule[i - 1].from_half_cycle),
+                     "planned_walk: goal_schedule[", i,
+                     "].from_half_cycle must be >= 0 and above "
+                     "the previous entry's, got ",
+                     e.from_half_cycle);
+      try {
+        validate(e.goal);
+      } catch (const std::invalid_argument& x) {
+        throw std::invalid_argument("planned_walk: goal_schedule[" + std::to_string(i) +
+                                    "]: " + x.what());
+      }
+    }
     validate(opt_.setup);
     check_argument(opt_.first_stance != stance_side::none,
                    "planned_walk: first_stance must be left or right, got none");
@@ -326,6 +353,16 @@ class planned_walk {
     clear_report(st);
   }
 
+  /// Half-cycle k's goal G (options.goal_schedule). No allocation.
+  const task_goal& goal_of(std::int64_t k) const {
+    const task_goal* g = &opt_.goal;
+    for (const scheduled_goal& e : opt_.goal_schedule) {
+      if (e.from_half_cycle > k) break;
+      g = &e.goal;
+    }
+    return *g;
+  }
+
   /// Half-cycle k's stance foot.
   stance_side stance_of(std::int64_t k) const {
     const stance_side other =
@@ -375,8 +412,9 @@ class planned_walk {
     if (previous != nullptr)
       in.upper_body_deviation = upper_body_deviation(*previous, in.upper_body.position);
     const int next = st.current < 0 ? 0 : 1 - st.current;
+    const task_goal& goal = goal_of(k);
     st.plans[static_cast<std::size_t>(next)] = plan_half_cycle(
-        opt_.goal, omega_[static_cast<std::size_t>(k % 2)], opt_.setup, in, terrain_, previous);
+        goal, omega_[static_cast<std::size_t>(k % 2)], opt_.setup, in, terrain_, previous);
     st.current = next;
     st.half_cycle = k;
     st.half_cycle_start = st.start_time + static_cast<double>(k) * opt_.setup.t_h;
@@ -385,7 +423,7 @@ class planned_walk {
     st.stance_anchored = false;
     ++st.plans_made;
     // Sec. 8.1: c_k = c^_{k-1} + R_z(psi_m) (r x), from the COM sensed as half-cycle k starts.
-    const double psi_m = opt_.goal.movement, r = opt_.goal.step_length;
+    const double psi_m = goal.movement, r = goal.step_length;
     st.report[report_layout_.half_cycle] = static_cast<double>(k);
     st.report[report_layout_.com_target] = s.com.x() + r * std::cos(psi_m);
     st.report[report_layout_.com_target + 1] = s.com.y() + r * std::sin(psi_m);
