@@ -20,6 +20,7 @@
 #include "gaitsynth/controllers/end_effector/planned_walk.hpp"
 #include "gaitsynth/controllers/end_effector/planned_walk_parameters.hpp"
 #include "gaitsynth/controllers/end_effector/planned_walk_report.hpp"
+#include "gaitsynth/controllers/end_effector/walk_script.hpp"
 #include "gaitsynth/controllers/end_effector/planner_parameters.hpp"
 #include "gaitsynth/controllers/end_effector/planner_targets.hpp"
 #include "gaitsynth/controllers/end_effector/planner_timing.hpp"

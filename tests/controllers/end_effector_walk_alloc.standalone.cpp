@@ -11,6 +11,7 @@
 #include "gaitsynth/actuators/torque.hpp"
 #include "gaitsynth/contact/flat_terrain.hpp"
 #include "gaitsynth/controllers/end_effector/planned_walk.hpp"
+#include "gaitsynth/controllers/end_effector/walk_script.hpp"
 #include "gaitsynth/integrators/semi_implicit_euler.hpp"
 #include "gaitsynth/models/wu2010.hpp"
 #include "gaitsynth/objectives/distance.hpp"
@@ -83,6 +84,40 @@ TEST_CASE(
                            o, scratch, plans);
   CHECK_FALSE(res.diverged());
   CHECK(std::isfinite(res.cost));
+  CHECK(r.views == 2880);
+  CHECK(plans.plans == 3);
+  CHECK(r.news_at_end - r.news_at_start == 0);
+  CHECK(r.eigen_at_end - r.eigen_at_start == 0);
+}
+
+TEST_CASE(
+    "walk_script switching controllers, with goal changes and the helper force, allocates "
+    "nothing",
+    "[end_effector][allocation][walk_script]") {
+  CHECK(counters_see_allocations());
+  const floating_model m = wu2010_biped();
+  planned_walk_options po;
+  po.helper_force = true;
+  po.h_max = 200.0;
+  po.goal_schedule = {{1, {0.1, 0.1, 0.5}}};
+  planned_walk_options stand;
+  stand.goal = {0.0, 0.0, 0.0};
+  const walk_script<> c(
+      {planned_walk<>(m, flat_terrain{}, po), planned_walk<>(m, flat_terrain{}, stand)},
+      {{0, 0}, {2, 1}}, 0);
+  rollout_options o;
+  o.duration = 1.2;
+  o.detect_falls = false;
+  o.initial_state = make_state(m);
+  place_on_terrain(m, flat_terrain{}, o.initial_state.q);
+  auto scratch = make_rollout_scratch(m);
+  region r;
+  const auto inner = wu2010_objective(c.report_layout());
+  const counting_objective<std::decay_t<decltype(inner)>> obj{inner, &r};
+  plan_counter plans;
+  const auto res = rollout(m, torque_actuator{}, c, obj, flat_terrain{}, semi_implicit_euler(),
+                           c.default_parameters(), o, scratch, plans);
+  CHECK_FALSE(res.diverged());
   CHECK(r.views == 2880);
   CHECK(plans.plans == 3);
   CHECK(r.news_at_end - r.news_at_start == 0);

@@ -4,7 +4,7 @@
 // objective and the Wang 2009 terms that need no particular body (they read the step view: COM,
 // torques, momentum), each alone and summed, and planned_walk under the offline-optimization cost
 // of Wu & Popovic 2010 (objectives/wu2010/: its terms read the controller's report), with and
-// without the helper force.
+// without the helper force; walk_script (planned_walks chained per half-cycle) the same way.
 #include <catch2/catch.hpp>
 
 #include <cmath>
@@ -14,6 +14,7 @@
 #include "gaitsynth/contact/slope_terrain.hpp"
 #include "gaitsynth/controllers/end_effector/planned_walk.hpp"
 #include "gaitsynth/controllers/end_effector/standing_balance.hpp"
+#include "gaitsynth/controllers/end_effector/walk_script.hpp"
 #include "gaitsynth/integrators/odeint.hpp"
 #include "gaitsynth/integrators/semi_implicit_euler.hpp"
 #include "gaitsynth/models/wu2010.hpp"
@@ -73,6 +74,27 @@ rollout_result walk_wu2010(const floating_model& m, const Terrain& ground, MakeO
                  scratch);
 }
 
+/// walk_script: two planned_walks on `ground` (the second standing, r = 0), switching at the
+/// first half-cycle boundary of the 0.6 s rollout; the first one free, with the helper force.
+template <class Integrator, class Terrain, class Objective>
+rollout_result scripted(const floating_model& m, const Terrain& ground, const Objective& obj) {
+  planned_walk_options po;
+  po.helper_force = true;
+  po.h_max = 100.0;
+  planned_walk_options stand;
+  stand.goal = {0.0, 0.0, 0.0};
+  const walk_script<Terrain> c(
+      {planned_walk<Terrain>(m, ground, po), planned_walk<Terrain>(m, ground, stand)},
+      {{0, 0}, {1, 1}}, 0);
+  rollout_options o;
+  o.duration = 0.6;
+  o.initial_state = make_state(m);
+  place_on_terrain(m, ground, o.initial_state.q);
+  auto scratch = make_rollout_scratch(m);
+  return rollout(m, torque_actuator{}, c, obj, ground, Integrator{}, c.default_parameters(), o,
+                 scratch);
+}
+
 }  // namespace
 
 TEST_CASE(
@@ -127,4 +149,17 @@ TEST_CASE("planned_walk composes with the Wu 2010 cost terms and the helper forc
     return weighted_sum<wu2010_objective_type, wang2009::failure>({1.0, 1.0}, wu2010_objective(l),
                                                                   wang2009::failure());
   }));
+}
+
+TEST_CASE("walk_script composes with integrators, terrains and objectives",
+          "[rollout][compose][end_effector][walk_script]") {
+  const floating_model m = wu2010_biped();
+  const auto check = [](const rollout_result& r) {
+    CHECK(r.reason == stop_reason::horizon);
+    CHECK(std::isfinite(r.cost));
+  };
+  const auto wu = wu2010_objective(planned_walk_report_layout::for_action_frames(8));
+  check(scripted<semi_implicit_euler>(m, flat_terrain{}, wu));
+  check(scripted<semi_implicit_euler>(m, slope_terrain(0.05), distance_objective()));
+  check(scripted<odeint_rk4>(m, flat_terrain{}, wang2009::power()));
 }
