@@ -7,10 +7,13 @@
 // iteration or after 4000 iterations. Cost per candidate: one rollout of 4 locomotion cycles
 // (8 half-cycles, 4.4 s) with the helper force on (h_max the last parameter, [-200, 1000] N),
 // under eq. 6 + eq. 7 (objectives/wu2010/wu2010_objective.hpp) plus a fall guard (below). A new
-// random height field every CMA iteration, the same for all 32 samples of it (Sec. 8.3: 1 m grid,
-// node heights U[0, 0.2] m): iteration i (counted from 0) walks on
-// random_height_field({}, seed * 1000003 + i), so --resume regenerates it; --flat optimizes on
-// flat ground instead.
+// random terrain every CMA iteration, the same for all 32 samples of it (Sec. 8.3: a height field
+// on a 1 m grid with node heights U[0, 0.2] m, or "terrain with vertical drops created with
+// boxes", heights U[0, 0.2] m, which the forward walk is also optimized on): iteration i (counted
+// from 0) walks on random_height_field({}, seed * 1000003 + i) or, --terrain mixed (the default)
+// on odd iterations or --terrain boxes on all, random_boxes({}, seed * 1000003 + i); --resume
+// regenerates it (runs that did not record --terrain used height fields only); --flat optimizes
+// on flat ground instead.
 //
 //   wu2010_walk [--iterations N] [--threads N] [--seed K] [--out DIR] [--init FILE]
 //               [--horizon S] [--flat] [--fall-penalty W] [--check-seconds S]
@@ -74,7 +77,8 @@
 // The check (after the optimization, or of --replay FILE / --init FILE with --iterations 0): the
 // controller WITHOUT the helper force (Sec. 8.2: the paper's controller after the optimization;
 // h_max is dropped) walks --check-seconds (20 s) on flat ground and on 10 unseen random height
-// fields (seeds 9001..9010), with the library's stall rule (rollout/walk_check.hpp), and on flat
+// fields (seeds 9001..9010) and 10 unseen grids of boxes (9101..9110), with the library's stall
+// rule (rollout/walk_check.hpp), and on flat
 // ground with pushes (Sec. 9: "it can sustain sideways or forward pushes of 350 N with 0.1 s
 // durations"): --push-force newtons (350; 0 skips them) for 0.1 s on the upper body's COM every 4 s
 // from 4 s on, one trial per direction (forward, backward, left, right), passed when it is still
@@ -103,6 +107,8 @@
 #include "gaitsynth/actuators/torque.hpp"
 #include "gaitsynth/analysis/swing_clearance.hpp"
 #include "gaitsynth/contact/height_field_terrain.hpp"
+#include "gaitsynth/contact/steps_terrain.hpp"
+#include "gaitsynth/contact/terrain_choice.hpp"
 #include "gaitsynth/contact/terrain_ref.hpp"
 #include "gaitsynth/controllers/end_effector/planned_walk.hpp"
 #include "gaitsynth/controllers/end_effector/planned_walk_json.hpp"
@@ -127,7 +133,9 @@ namespace fs = std::filesystem;
 
 namespace {
 
-using field_ref = terrain_ref<height_field_terrain>;
+/// A height field or a grid of boxes (Sec. 8.3 trains the forward walk on both).
+using field_or_boxes = terrain_choice<height_field_terrain, steps_terrain>;
+using field_ref = terrain_ref<field_or_boxes>;
 using walk_controller = planned_walk<field_ref>;
 
 struct cli {
@@ -153,7 +161,8 @@ struct cli {
   double push_force = 350.0;    // N, Sec. 9
   bool terrain_blind = false;   // planner_setup::terrain_awareness = false
   bool terrain_blind_given = false;
-  double helper_weight = 5e-3;  // eq. 7's w_h (Sec. 8.3)
+  double helper_weight = 5e-3;    // eq. 7's w_h (Sec. 8.3)
+  std::string terrain = "mixed";  // Sec. 8.3: height fields and boxes
   std::string command, out_arg;
   nlohmann::json options;
 };
@@ -225,6 +234,10 @@ cli parse(int argc, char** argv) {
                  "eq. 7's w_h, per N of h_max per timestep (Sec. 8.3: 5e-3; larger for Sec. "
                  "8.2's continuation)")
       ->check(example_cli::in_range(0.0, 1e6));
+  app.add_option("--terrain", c.terrain,
+                 "the training terrain per iteration: random height fields, random boxes, or both "
+                 "(mixed: boxes on odd iterations; Sec. 8.3's forward walk)")
+      ->check(CLI::IsMember({"fields", "boxes", "mixed"}));
   app.add_flag("--terrain-blind", c.terrain_blind,
                "plan without sampling the terrain (the stance foot's ground plane)");
   example_cli::parse(app, argc, argv);
@@ -239,6 +252,8 @@ cli parse(int argc, char** argv) {
       c.cost_timestep = 0.0;
     if (std::find(recorded.begin(), recorded.end(), "--divergence") == recorded.end())
       c.divergence = "infinite";
+    if (std::find(recorded.begin(), recorded.end(), "--terrain") == recorded.end())
+      c.terrain = "fields";  // runs from before --terrain trained on height fields only
     out = resume;
     c.resume = true;
   }
@@ -294,6 +309,20 @@ height_field_terrain training_field(std::uint64_t seed, bool flat) {
   return random_height_field(o, seed);
 }
 
+/// Wu's boxes (random_boxes' defaults: 1 m boxes over the same area, heights U[0, 0.2] m).
+steps_terrain training_boxes(std::uint64_t seed) {
+  return random_boxes({}, seed);
+}
+
+/// --terrain's ground for seed `seed` of iteration i: a height field, boxes, or (mixed) boxes on
+/// odd iterations; flat ground with --flat.
+field_or_boxes training_terrain(std::uint64_t seed, std::int64_t i, const std::string& kind,
+                                bool flat) {
+  const bool boxes = !flat && (kind == "boxes" || (kind == "mixed" && i % 2 == 1));
+  return boxes ? field_or_boxes(training_field(0, true), training_boxes(seed), true)
+               : field_or_boxes(training_field(seed, flat), training_boxes(0), false);
+}
+
 /// The neutral pose standing on `ground`.
 template <terrain T>
 sim_state start_on(const floating_model& m, const T& ground) {
@@ -329,7 +358,7 @@ int run(const cli& c) {
   // The training terrain: one field, replaced between CMA iterations, read by the problem's
   // contact and by every controller copy through terrain_ref.
   const std::uint64_t field_base = c.seed * 1000003ull;
-  height_field_terrain field = training_field(field_base, c.flat);
+  field_or_boxes field = training_terrain(field_base, 0, c.terrain, c.flat);
   const field_ref ground(field);
 
   // How the controller runs: the command line's options, else (--init, --replay) what the saved
@@ -412,9 +441,9 @@ int run(const cli& c) {
     ro.checkpoint_file = stem + ".checkpoint";
     ro.checkpoint_every = 10;
     ro.resume = c.resume;
-    // The field of iteration i (from 0): seed * 1000003 + i, the start state placed on it.
+    // The terrain of iteration i (from 0): seed * 1000003 + i, the start state placed on it.
     auto use_field = [&](std::int64_t i) {
-      field = training_field(field_base + static_cast<std::uint64_t>(i), c.flat);
+      field = training_terrain(field_base + static_cast<std::uint64_t>(i), i, c.terrain, c.flat);
       prob.options.initial_state = start_on(m, ground);
     };
     if (c.resume && fs::exists(ro.checkpoint_file)) {
@@ -437,6 +466,7 @@ int run(const cli& c) {
       info["stance_target"] = stance_target;
       info["terrain_blind"] = terrain_blind;
       info["helper_weight"] = c.helper_weight;
+      info["terrain"] = c.terrain;
       info["cost_timestep"] = c.cost_timestep;
       info["divergence"] = c.divergence;
       info["command"] = c.command;
@@ -500,7 +530,7 @@ int run(const cli& c) {
   check.duration = c.check_seconds;
   auto scratch = make_rollout_scratch(m);
   const std::span<const double> px(plain_x.data(), static_cast<std::size_t>(plain_x.size()));
-  auto walk_on = [&](const height_field_terrain& terrain, trajectory* record) {
+  auto walk_on = [&](const field_or_boxes& terrain, trajectory* record) {
     field = terrain;
     check.initial_state = start_on(m, ground);
     check.record = record;
@@ -509,7 +539,7 @@ int run(const cli& c) {
                               px, check, scratch));
   };
   // For comparison, the same walk on flat ground with the helper force of the optimization.
-  field = training_field(0, true);
+  field = training_terrain(0, 0, "fields", true);
   check.initial_state = start_on(m, ground);
   check.record = nullptr;
   std::optional<walk_check> helped;
@@ -519,31 +549,38 @@ int run(const cli& c) {
                 std::span<const double>(best.data(), static_cast<std::size_t>(best.size())), check,
                 scratch));
   trajectory tr;
-  const walk_check flat = walk_on(training_field(0, true), &tr);
+  const walk_check flat = walk_on(training_terrain(0, 0, "fields", true), &tr);
   save_csv(stem + ".csv", tr);
-  int fields_walked = 0;
-  nlohmann::ordered_json per_field = nlohmann::ordered_json::array();
+  // 10 unseen height fields (seeds 9001..9010) and 10 unseen box grids (9101..9110).
   std::vector<double> clearances;  // every field's swings, both feet
-  for (std::uint64_t s = 9001; s <= 9010; ++s) {
-    trajectory field_tr;
-    const walk_check w = walk_on(random_height_field({}, s), &field_tr);
-    fields_walked += w.walked ? 1 : 0;
-    std::vector<double> peaks;
-    for (const char* foot : {"lfoot", "rfoot"})
-      for (const foot_swing& sw : swing_clearance(m, field_tr, ground, foot).swings)
-        peaks.push_back(sw.peak_clearance);
-    clearances.insert(clearances.end(), peaks.begin(), peaks.end());
-    per_field.push_back({{"seed", s},
-                         {"verdict", verdict(w)},
-                         {"time", w.seconds},
-                         {"distance", w.distance},
-                         {"swings", peaks.size()},
-                         {"median_swing_clearance", median_or_null(peaks)}});
-  }
+  auto walk_unseen = [&](std::uint64_t first_seed, bool boxes, int& walked) {
+    nlohmann::ordered_json out = nlohmann::ordered_json::array();
+    for (std::uint64_t s = first_seed; s < first_seed + 10; ++s) {
+      trajectory field_tr;
+      const walk_check w =
+          walk_on(training_terrain(s, 0, boxes ? "boxes" : "fields", false), &field_tr);
+      walked += w.walked ? 1 : 0;
+      std::vector<double> peaks;
+      for (const char* foot : {"lfoot", "rfoot"})
+        for (const foot_swing& sw : swing_clearance(m, field_tr, ground, foot).swings)
+          peaks.push_back(sw.peak_clearance);
+      if (!boxes) clearances.insert(clearances.end(), peaks.begin(), peaks.end());
+      out.push_back({{"seed", s},
+                     {"verdict", verdict(w)},
+                     {"time", w.seconds},
+                     {"distance", w.distance},
+                     {"swings", peaks.size()},
+                     {"median_swing_clearance", median_or_null(peaks)}});
+    }
+    return out;
+  };
+  int fields_walked = 0, boxes_walked = 0;
+  const nlohmann::ordered_json per_field = walk_unseen(9001, false, fields_walked);
+  const nlohmann::ordered_json per_box_grid = walk_unseen(9101, true, boxes_walked);
   // Sec. 9's pushes on flat ground, one walk per direction.
   nlohmann::ordered_json pushes = nlohmann::ordered_json::array();
   if (c.push_force > 0.0) {
-    field = training_field(0, true);
+    field = training_terrain(0, 0, "fields", true);
     rollout_options pushed = check;
     pushed.initial_state = start_on(m, ground);
     pushed.record = nullptr;
@@ -575,6 +612,9 @@ int run(const cli& c) {
   sum["terrain_blind"] = terrain_blind;
   sum["fields"] = 10;
   sum["field_checks"] = per_field;
+  sum["boxes_walked"] = boxes_walked;  // of 10 unseen grids of boxes
+  sum["box_checks"] = per_box_grid;
+  sum["terrain"] = c.terrain;
   sum["pushes"] = pushes;
   sum["check_seconds"] = c.check_seconds;
   sum["controller_rate"] = rate;

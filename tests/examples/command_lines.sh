@@ -59,6 +59,7 @@ case "$mode" in
           "$exe" --body bird
         expect 2 "--push-force: must be in .*, got -350" -- "$exe" --push-force -350
         expect 2 "--helper-weight: must be in .*, got -1" -- "$exe" --helper-weight -1
+        expect 2 "--terrain: stairs not in \{fields,boxes,mixed\}" -- "$exe" --terrain stairs
       fi
       if grep -q -- "--seed" <<<"$help"; then
         expect 2 "--seed: must be in .*, got -3" -- "$exe" --seed -3
