@@ -184,6 +184,7 @@ inline void qp_drop_active(qp_workspace& ws, Eigen::Index k) {
 /// The first non-finite entry of v (row-major for a matrix), or -1.
 template <class M>
 Eigen::Index first_nan_or_inf(const M& v) {
+  if (v.allFinite()) return -1;  // vectorized; the row-major scan below only names the first bad
   for (Eigen::Index i = 0; i < v.rows(); ++i)
     for (Eigen::Index j = 0; j < v.cols(); ++j)
       if (!std::isfinite(v(i, j))) return i * v.cols() + j;
