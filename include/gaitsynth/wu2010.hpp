@@ -5,6 +5,7 @@
 /// (Sec. 5-6, appendix B) on the library's dense QP solver, the standing and cyclical controllers,
 /// the offline-optimization cost (Sec. 8.1-8.2), Table 1's search space and the per-iteration
 /// terrain reference. gaitsynth.hpp holds the core they build on.
+#include "gaitsynth/contact/terrain_choice.hpp"
 #include "gaitsynth/contact/terrain_ref.hpp"
 #include "gaitsynth/controllers/end_effector/foot_clearance.hpp"
 #include "gaitsynth/controllers/end_effector/force_qp.hpp"
@@ -20,13 +21,13 @@
 #include "gaitsynth/controllers/end_effector/planned_walk.hpp"
 #include "gaitsynth/controllers/end_effector/planned_walk_parameters.hpp"
 #include "gaitsynth/controllers/end_effector/planned_walk_report.hpp"
-#include "gaitsynth/controllers/end_effector/walk_script.hpp"
 #include "gaitsynth/controllers/end_effector/planner_parameters.hpp"
 #include "gaitsynth/controllers/end_effector/planner_targets.hpp"
 #include "gaitsynth/controllers/end_effector/planner_timing.hpp"
 #include "gaitsynth/controllers/end_effector/standing_balance.hpp"
 #include "gaitsynth/controllers/end_effector/swing_foot_path.hpp"
 #include "gaitsynth/controllers/end_effector/upper_body_path.hpp"
+#include "gaitsynth/controllers/end_effector/walk_script.hpp"
 #include "gaitsynth/models/wu2010.hpp"
 #include "gaitsynth/objectives/wu2010/wu2010_objective.hpp"
 #include "gaitsynth/qp/dense_qp.hpp"
