@@ -33,29 +33,45 @@ struct plan_counter {
   }
 };
 
+/// What 1.2 s of `c` on flat ground (plans at 0, 0.55 and 1.1 s; falls not detected: the default
+/// parameters fall near 1.2 s, keep ticking regardless) allocated between its first and last
+/// objective view, with the plans it made.
+struct counted_walk {
+  rollout_result result;
+  region r;
+  std::int64_t plans = 0;
+};
+
+template <class C, class Objective>
+counted_walk count_walk(const floating_model& m, const C& c, const Objective& inner,
+                        const std::vector<double>& p) {
+  rollout_options o;
+  o.duration = 1.2;
+  o.detect_falls = false;
+  o.initial_state = make_state(m);
+  place_on_terrain(m, flat_terrain{}, o.initial_state.q);
+  auto scratch = make_rollout_scratch(m);
+  counted_walk out;
+  const counting_objective<Objective> obj{inner, &out.r};
+  plan_counter plans;
+  out.result = rollout(m, torque_actuator{}, c, obj, flat_terrain{}, semi_implicit_euler(), p, o,
+                       scratch, plans);
+  out.plans = plans.plans;
+  return out;
+}
+
 }  // namespace
 
 TEST_CASE("planned_walk ticks and plans without allocating", "[end_effector][allocation]") {
   CHECK(counters_see_allocations());
   const floating_model m = wu2010_biped();
   const planned_walk<> c(m);
-  rollout_options o;
-  o.duration = 1.2;        // plans at 0, 0.55 and 1.1 s
-  o.detect_falls = false;  // the default parameters fall near 1.2 s; keep ticking regardless
-  o.initial_state = make_state(m);
-  place_on_terrain(m, flat_terrain{}, o.initial_state.q);
-  auto scratch = make_rollout_scratch(m);
-  region r;
-  const auto inner = distance_objective();
-  const counting_objective<std::decay_t<decltype(inner)>> obj{inner, &r};
-  plan_counter plans;
-  const auto res = rollout(m, torque_actuator{}, c, obj, flat_terrain{}, semi_implicit_euler(),
-                           c.default_parameters(), o, scratch, plans);
-  CHECK_FALSE(res.diverged());
-  CHECK(r.views == 2880);
-  CHECK(plans.plans == 3);
-  CHECK(r.news_at_end - r.news_at_start == 0);
-  CHECK(r.eigen_at_end - r.eigen_at_start == 0);
+  const counted_walk w = count_walk(m, c, distance_objective(), c.default_parameters());
+  CHECK_FALSE(w.result.diverged());
+  CHECK(w.r.views == 2880);
+  CHECK(w.plans == 3);
+  CHECK(w.r.news_at_end - w.r.news_at_start == 0);
+  CHECK(w.r.eigen_at_end - w.r.eigen_at_start == 0);
 }
 
 TEST_CASE(
@@ -70,24 +86,13 @@ TEST_CASE(
   const planned_walk<> c(m, flat_terrain{}, po);
   std::vector<double> p = c.default_parameters();
   p[c.helper_offset()] = 200.0;
-  rollout_options o;
-  o.duration = 1.2;
-  o.detect_falls = false;
-  o.initial_state = make_state(m);
-  place_on_terrain(m, flat_terrain{}, o.initial_state.q);
-  auto scratch = make_rollout_scratch(m);
-  region r;
-  const auto inner = wu2010_objective(c.report_layout());
-  const counting_objective<std::decay_t<decltype(inner)>> obj{inner, &r};
-  plan_counter plans;
-  const auto res = rollout(m, torque_actuator{}, c, obj, flat_terrain{}, semi_implicit_euler(), p,
-                           o, scratch, plans);
-  CHECK_FALSE(res.diverged());
-  CHECK(std::isfinite(res.cost));
-  CHECK(r.views == 2880);
-  CHECK(plans.plans == 3);
-  CHECK(r.news_at_end - r.news_at_start == 0);
-  CHECK(r.eigen_at_end - r.eigen_at_start == 0);
+  const counted_walk w = count_walk(m, c, wu2010_objective(c.report_layout()), p);
+  CHECK_FALSE(w.result.diverged());
+  CHECK(std::isfinite(w.result.cost));
+  CHECK(w.r.views == 2880);
+  CHECK(w.plans == 3);
+  CHECK(w.r.news_at_end - w.r.news_at_start == 0);
+  CHECK(w.r.eigen_at_end - w.r.eigen_at_start == 0);
 }
 
 TEST_CASE(
@@ -105,21 +110,11 @@ TEST_CASE(
   const walk_script<> c(
       {planned_walk<>(m, flat_terrain{}, po), planned_walk<>(m, flat_terrain{}, stand)},
       {{0, 0}, {2, 1}}, 0);
-  rollout_options o;
-  o.duration = 1.2;
-  o.detect_falls = false;
-  o.initial_state = make_state(m);
-  place_on_terrain(m, flat_terrain{}, o.initial_state.q);
-  auto scratch = make_rollout_scratch(m);
-  region r;
-  const auto inner = wu2010_objective(c.report_layout());
-  const counting_objective<std::decay_t<decltype(inner)>> obj{inner, &r};
-  plan_counter plans;
-  const auto res = rollout(m, torque_actuator{}, c, obj, flat_terrain{}, semi_implicit_euler(),
-                           c.default_parameters(), o, scratch, plans);
-  CHECK_FALSE(res.diverged());
-  CHECK(r.views == 2880);
-  CHECK(plans.plans == 3);
-  CHECK(r.news_at_end - r.news_at_start == 0);
-  CHECK(r.eigen_at_end - r.eigen_at_start == 0);
+  const counted_walk w =
+      count_walk(m, c, wu2010_objective(c.report_layout()), c.default_parameters());
+  CHECK_FALSE(w.result.diverged());
+  CHECK(w.r.views == 2880);
+  CHECK(w.plans == 3);
+  CHECK(w.r.news_at_end - w.r.news_at_start == 0);
+  CHECK(w.r.eigen_at_end - w.r.eigen_at_start == 0);
 }
