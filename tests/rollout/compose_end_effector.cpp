@@ -31,13 +31,20 @@ using namespace gaitsynth;
 
 namespace {
 
+/// `duration` seconds from the neutral pose standing on `ground` (feet on the ground below).
+template <class Terrain>
+rollout_options on_ground(const floating_model& m, const Terrain& ground, double duration) {
+  rollout_options o;
+  o.duration = duration;
+  o.initial_state = make_state(m);
+  place_on_terrain(m, ground, o.initial_state.q);
+  return o;
+}
+
 template <class Integrator, class Terrain, class Objective>
 rollout_result stand(const floating_model& m, const Terrain& ground, const Objective& obj) {
   standing_balance<> c(m);
-  rollout_options o;
-  o.duration = 0.05;
-  o.initial_state = make_state(m);  // the neutral pose, feet on the ground below
-  place_on_terrain(m, ground, o.initial_state.q);
+  const rollout_options o = on_ground(m, ground, 0.05);
   auto scratch = make_rollout_scratch(m);
   const auto p = c.gains().to_array();
   return rollout(m, torque_actuator{}, c, obj, ground, Integrator{}, p, o, scratch);
@@ -47,10 +54,7 @@ rollout_result stand(const floating_model& m, const Terrain& ground, const Objec
 template <class Integrator, class Terrain, class Objective>
 rollout_result walk(const floating_model& m, const Terrain& ground, const Objective& obj) {
   const planned_walk<Terrain> c(m, ground);
-  rollout_options o;
-  o.duration = 0.05;
-  o.initial_state = make_state(m);
-  place_on_terrain(m, ground, o.initial_state.q);
+  const rollout_options o = on_ground(m, ground, 0.05);
   auto scratch = make_rollout_scratch(m);
   return rollout(m, torque_actuator{}, c, obj, ground, Integrator{}, c.default_parameters(), o,
                  scratch);
@@ -65,10 +69,7 @@ rollout_result walk_wu2010(const floating_model& m, const Terrain& ground, MakeO
   const planned_walk<Terrain> c(m, ground, po);
   std::vector<double> p = c.default_parameters();
   if (po.helper_force) p[c.helper_offset()] = h_max;
-  rollout_options o;
-  o.duration = 0.05;
-  o.initial_state = make_state(m);
-  place_on_terrain(m, ground, o.initial_state.q);
+  const rollout_options o = on_ground(m, ground, 0.05);
   auto scratch = make_rollout_scratch(m);
   return rollout(m, torque_actuator{}, c, make(c.report_layout()), ground, Integrator{}, p, o,
                  scratch);
@@ -86,10 +87,7 @@ rollout_result scripted(const floating_model& m, const Terrain& ground, const Ob
   const walk_script<Terrain> c(
       {planned_walk<Terrain>(m, ground, po), planned_walk<Terrain>(m, ground, stand)},
       {{0, 0}, {1, 1}}, 0);
-  rollout_options o;
-  o.duration = 0.6;
-  o.initial_state = make_state(m);
-  place_on_terrain(m, ground, o.initial_state.q);
+  const rollout_options o = on_ground(m, ground, 0.6);
   auto scratch = make_rollout_scratch(m);
   return rollout(m, torque_actuator{}, c, obj, ground, Integrator{}, c.default_parameters(), o,
                  scratch);
