@@ -19,7 +19,7 @@
 //               [--horizon S] [--flat] [--fall-penalty W] [--check-seconds S]
 //               [--controller-rate HZ] [--sigma S] [--cost-timestep S]
 //               [--stance-target planned_landing|touchdown] [--no-helper]
-//               [--divergence fall|infinite]
+//               [--divergence fall|infinite] [--robust-starts K] [--start-sigma S]
 //   wu2010_walk --resume DIR [--threads N]
 //   wu2010_walk --replay FILE [--check-seconds S] [--out DIR]
 //               [--body normal|inverted_knees|frozen_left_knee] [--push-force N]
@@ -62,6 +62,12 @@
 // option keeps). With +infinity a helper-free stage whose candidates mostly diverge cannot rank
 // them.
 //
+// --robust-starts K (ours, as wang2009_walk's and wang2012_walk's): K more rollouts per candidate
+// on the iteration's terrain from starts whose joint velocities are perturbed by a seeded
+// N(0, S^2) (--start-sigma, 0.05 rad/s; synthesis/robust_variants.hpp), the cost the sum. These
+// walks are chaotic: a candidate 1e-6 (normalized) from a mean that walks can fall within 1.5 s, so
+// one rollout per candidate ranks luck as much as a gait's stability.
+//
 // --no-helper (ours): optimize without the helper force (no h_max parameter, no penalty), e.g. a
 // second stage from a helped run's best (--init FILE drops its h_max) when that run ends with
 // h_max > 0. The saved controller records "helper_force": false, which --replay follows.
@@ -78,7 +84,8 @@
 // controller WITHOUT the helper force (Sec. 8.2: the paper's controller after the optimization;
 // h_max is dropped) walks --check-seconds (20 s) on flat ground and on 10 unseen random height
 // fields (seeds 9001..9010) and 10 unseen grids of boxes (9101..9110), with the library's stall
-// rule (rollout/walk_check.hpp), and on flat
+// rule (rollout/walk_check.hpp), from 10 perturbed starts on flat ground (joint velocities
+// N(0, 0.05^2) rad/s, seed 2010), and on flat
 // ground with pushes (Sec. 9: "it can sustain sideways or forward pushes of 350 N with 0.1 s
 // durations"): --push-force newtons (350; 0 skips them) for 0.1 s on the upper body's COM every 4 s
 // from 4 s on, one trial per direction (forward, backward, left, right), passed when it is still
@@ -123,9 +130,12 @@
 #include "gaitsynth/optimizers/minimize.hpp"
 #include "gaitsynth/rollout/problem.hpp"
 #include "gaitsynth/rollout/problem_cost.hpp"
+#include "gaitsynth/rollout/problem_with_variants.hpp"
 #include "gaitsynth/rollout/push_test.hpp"
 #include "gaitsynth/rollout/rollout.hpp"
+#include "gaitsynth/rollout/start_perturbations.hpp"
 #include "gaitsynth/rollout/walk_check.hpp"
+#include "gaitsynth/synthesis/robust_variants.hpp"
 #include "gaitsynth/synthesis/wu2010_search_space.hpp"
 
 using namespace gaitsynth;
@@ -163,6 +173,8 @@ struct cli {
   bool terrain_blind_given = false;
   double helper_weight = 5e-3;    // eq. 7's w_h (Sec. 8.3)
   std::string terrain = "mixed";  // Sec. 8.3: height fields and boxes
+  int robust_starts = 0;          // ours: more rollouts per candidate from perturbed starts
+  double start_sigma = 0.05;      // rad/s, their joint velocities' perturbation
   std::string command, out_arg;
   nlohmann::json options;
 };
@@ -238,6 +250,13 @@ cli parse(int argc, char** argv) {
                  "the training terrain per iteration: random height fields, random boxes, or both "
                  "(mixed: boxes on odd iterations; Sec. 8.3's forward walk)")
       ->check(CLI::IsMember({"fields", "boxes", "mixed"}));
+  app.add_option("--robust-starts", c.robust_starts,
+                 "more rollouts per candidate on the same terrain from seeded perturbed starts "
+                 "(ours: the cost sums them)")
+      ->check(example_cli::integer_in(0, 1000));
+  app.add_option("--start-sigma", c.start_sigma,
+                 "the perturbed starts' joint velocity perturbation, rad/s (N(0, sigma^2))")
+      ->check(example_cli::in_range(0.0, 100.0));
   app.add_flag("--terrain-blind", c.terrain_blind,
                "plan without sampling the terrain (the stance foot's ground plane)");
   example_cli::parse(app, argc, argv);
@@ -420,6 +439,13 @@ int run(const cli& c) {
       cost_objective({1.0, c.fall_penalty}, wu2010_objective(ctrl.report_layout(), cost_options),
                      unfinished_steps(c.cost_timestep));
   rollout_problem prob{m, torque_actuator{}, ctrl, obj, ground, semi_implicit_euler{}, opt};
+  // --robust-starts: the copies from perturbed starts (none by default: the cost is prob's).
+  // Seeded apart from the check's perturbed starts (2010), so the check judges unseen ones.
+  auto robust =
+      make_problem_with_variants(prob, robust_variants(prob, {.starts = c.robust_starts,
+                                                              .start_sigma = c.start_sigma,
+                                                              .seed = 1000 + c.seed,
+                                                              .horizon = c.horizon}));
 
   Eigen::VectorXd best = Eigen::Map<const Eigen::VectorXd>(x0.data(), std::ssize(x0));
   double best_cost = std::numeric_limits<double>::quiet_NaN();
@@ -444,7 +470,8 @@ int run(const cli& c) {
     // The terrain of iteration i (from 0): seed * 1000003 + i, the start state placed on it.
     auto use_field = [&](std::int64_t i) {
       field = training_terrain(field_base + static_cast<std::uint64_t>(i), i, c.terrain, c.flat);
-      prob.options.initial_state = start_on(m, ground);
+      robust.options.initial_state = start_on(m, ground);
+      for (auto& v : robust.variants) v.options.initial_state = robust.options.initial_state;
     };
     if (c.resume && fs::exists(ro.checkpoint_file)) {
       load_checkpoint(cma, ro.checkpoint_file);  // (minimize loads it again) its iteration count
@@ -486,8 +513,8 @@ int run(const cli& c) {
       save(mu, std::numeric_limits<double>::quiet_NaN(), st, ".mean.json");
     };
     thread_pool_evaluator pool(c.threads);
-    problem_contexts ctx(prob, pool.thread_count());
-    problem_cost cost(prob, c.horizon, ctx);
+    problem_contexts ctx(robust, pool.thread_count());
+    problem_cost cost(robust, c.horizon, ctx);
     auto per_iteration = [&](const optimizer_status& st) {
       if (st.iteration % 10 == 0 && std::isfinite(cma.best_value()))
         save(cma.best_x(), cma.best_value(), st);
@@ -551,6 +578,17 @@ int run(const cli& c) {
   trajectory tr;
   const walk_check flat = walk_on(training_terrain(0, 0, "fields", true), &tr);
   save_csv(stem + ".csv", tr);
+  // 10 perturbed starts on flat ground (joint velocities N(0, 0.05^2) rad/s, seed 2010: starts
+  // that --robust-starts never trains on): does the walk survive a small difference at its start?
+  int perturbed_walked = 0;
+  nlohmann::ordered_json per_start = nlohmann::ordered_json::array();
+  for (const Eigen::VectorXd& dv : joint_velocity_perturbations(m, 10, 0.05, 2010)) {
+    check.initial_velocity_offset = dv;
+    const walk_check w = walk_on(training_terrain(0, 0, "fields", true), nullptr);
+    perturbed_walked += w.walked ? 1 : 0;
+    per_start.push_back({{"verdict", verdict(w)}, {"time", w.seconds}, {"distance", w.distance}});
+  }
+  check.initial_velocity_offset.resize(0);
   // 10 unseen height fields (seeds 9001..9010) and 10 unseen box grids (9101..9110).
   std::vector<double> clearances;  // every field's swings, both feet
   auto walk_unseen = [&](std::uint64_t first_seed, bool boxes, int& walked) {
@@ -607,6 +645,8 @@ int run(const cli& c) {
   sum["flat_distance"] = flat.distance;
   sum["flat_speed"] = flat.average_speed;
   sum["flat_check_cost"] = flat.cost;
+  sum["perturbed_walked"] = perturbed_walked;  // of 10 perturbed starts on flat ground
+  sum["perturbed_checks"] = per_start;
   sum["fields_walked"] = fields_walked;
   sum["median_swing_clearance"] = median_or_null(clearances);  // m, over the fields' swings
   sum["terrain_blind"] = terrain_blind;

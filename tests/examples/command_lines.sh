@@ -60,6 +60,9 @@ case "$mode" in
         expect 2 "--push-force: must be in .*, got -350" -- "$exe" --push-force -350
         expect 2 "--helper-weight: must be in .*, got -1" -- "$exe" --helper-weight -1
         expect 2 "--terrain: stairs not in \{fields,boxes,mixed\}" -- "$exe" --terrain stairs
+        expect 2 "--robust-starts: must be in .*, got -1" -- "$exe" --robust-starts -1
+        expect 2 "--robust-starts: '2.5' is not a whole number" -- "$exe" --robust-starts 2.5
+        expect 2 "--start-sigma: must be in .*, got nan" -- "$exe" --start-sigma nan
       fi
       if grep -q -- "--seed" <<<"$help"; then
         expect 2 "--seed: must be in .*, got -3" -- "$exe" --seed -3
