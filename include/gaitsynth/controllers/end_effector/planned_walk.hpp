@@ -299,6 +299,14 @@ class planned_walk {
   const T& ground() const { return terrain_; }
   const end_effector_layout& layout() const { return layout_; }
   double half_cycle_duration() const { return opt_.setup.t_h; }
+  /// The half-cycle k that a command at time t falls in: k starts at t_0 + k t_h, t_0 the time
+  /// of the first command (state_type::start_time; t itself before the first command). The
+  /// 1e-9 s slack keeps a command sensed at t_0 + k t_h minus rounding in half-cycle k.
+  std::int64_t half_cycle_at(double t, const state_type& st) const {
+    const double t0 = st.half_cycle < 0 ? t : st.start_time;
+    const double t_h = opt_.setup.t_h;
+    return static_cast<std::int64_t>(std::floor((t - t0) / t_h + 1e-9 / t_h));
+  }
   double period() const { return opt_.period; }
   static constexpr command_kind output_kind() { return command_kind::joint_torque; }
   int command_size(const model<Root>& m) const { return m.num_joint_dofs(); }
@@ -377,9 +385,8 @@ class planned_walk {
       st.helper.setZero();
       return;
     }
+    const std::int64_t k = half_cycle_at(s.t, st);
     if (st.half_cycle < 0) st.start_time = s.t;
-    const double t_h = opt_.setup.t_h;
-    const auto k = static_cast<std::int64_t>(std::floor((s.t - st.start_time) / t_h + 1e-9 / t_h));
     if (k != st.half_cycle) plan(s, st, k < 0 ? 0 : k);
     const half_cycle_plan& p = st.plans[static_cast<std::size_t>(st.current)];
     const double t_plan = std::max(0.0, s.t - st.half_cycle_start);

@@ -125,10 +125,8 @@ class walk_script {
   }
 
   void command(const sensors<Root>& s, state_type& st, Eigen::Ref<Eigen::VectorXd> cmd) const {
-    // planned_walk's own schedule: half-cycle k starts at t_0 + k t_h, t_0 the first command.
-    const double t0 = st.half_cycle < 0 ? s.t : st.start_time;
-    const double t_h = half_cycle_duration();
-    const auto k = static_cast<std::int64_t>(std::floor((s.t - t0) / t_h + 1e-9 / t_h));
+    // planned_walk's own schedule (every controller's: they agree on t_h).
+    const std::int64_t k = controllers_[0].half_cycle_at(s.t, st);
     controllers_[static_cast<std::size_t>(controller_of(k < 0 ? 0 : k))].command(s, st, cmd);
   }
 
