@@ -45,6 +45,7 @@
 #include "gaitsynth/contact/height_field_terrain.hpp"
 #include "gaitsynth/contact/penalty_contact.hpp"
 #include "gaitsynth/contact/push.hpp"
+#include "gaitsynth/contact/self_contact.hpp"
 #include "gaitsynth/contact/slope_terrain.hpp"
 #include "gaitsynth/contact/steps_terrain.hpp"
 #include "gaitsynth/contact/terrain.hpp"

@@ -1,4 +1,5 @@
-// apply_contact_forces and apply_pushes allocate nothing after set-up, on every terrain type. This
+// apply_contact_forces and apply_pushes allocate nothing after set-up, on every terrain type, nor
+// does apply_self_contact_forces with touching pairs. This
 // binary replaces every form of the global operator new / delete with counting versions, and
 // builds Eigen with EIGEN_RUNTIME_NO_MALLOC and an eigen_assert that counts instead of aborting
 // (Eigen allocates dynamic matrices through malloc, not operator new).
@@ -10,10 +11,12 @@
 #include "gaitsynth/contact/height_field_terrain.hpp"
 #include "gaitsynth/contact/penalty_contact.hpp"
 #include "gaitsynth/contact/push.hpp"
+#include "gaitsynth/contact/self_contact.hpp"
 #include "gaitsynth/contact/slope_terrain.hpp"
 #include "gaitsynth/contact/steps_terrain.hpp"
 #include "gaitsynth/models/standing.hpp"
 #include "gaitsynth/models/wang2009.hpp"
+#include "gaitsynth/models/wu2010.hpp"
 
 using namespace gaitsynth;
 
@@ -56,4 +59,25 @@ TEST_CASE("contact forces and pushes do not allocate", "[contact][allocation]") 
   check(allocations_in_steps(m, random_height_field({}, 1), 0.0));
   check(allocations_in_steps(m, steps_terrain::stairs(-0.5, 0.3, 0.15, 5), 0.15));
   check(allocations_in_steps(m, random_boxes({}, 2), 0.0));
+}
+
+TEST_CASE("self-collision forces do not allocate", "[contact][allocation]") {
+  const floating_model m = wu2010_biped();
+  const self_contact_parameters p = wu2010_leg_collisions(m);
+  auto ws = make_workspace(m);
+  Eigen::VectorXd q = make_state(m).q, v = Eigen::VectorXd::Random(m.nv()) * 0.1;
+  q[floating_root::nq + m.dof_index("lhip_x")] = -0.14;  // the left leg overlaps the right
+  forward_kinematics(m, ws, q, v);
+  Eigen::internal::set_is_malloc_allowed(false);
+  const long news = g_news.load(), eigen = g_eigen_asserts.load();
+  int touching = 0;
+  for (int k = 0; k < 100; ++k) {
+    clear_external_wrenches(ws);
+    touching += apply_self_contact_forces(m, ws, p);
+  }
+  const long new_count = g_news.load() - news, eigen_count = g_eigen_asserts.load() - eigen;
+  Eigen::internal::set_is_malloc_allowed(true);
+  CHECK(touching > 0);
+  CHECK(new_count == 0);
+  CHECK(eigen_count == 0);
 }

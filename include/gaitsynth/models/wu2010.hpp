@@ -31,10 +31,13 @@
 /// zero") at frozen_knee_angle: a limit spring 100 times the knee's, which holds it within 6 mrad
 /// against the knee's whole 700 N m. The variants keep the name "wu2010_biped" with a suffix.
 #include <Eigen/Core>
+#include <algorithm>
 #include <array>
 #include <cmath>
+#include <stdexcept>
 #include <string>
 
+#include "gaitsynth/contact/self_contact.hpp"
 #include "gaitsynth/error.hpp"
 #include "gaitsynth/model/model_builder.hpp"
 #include "gaitsynth/models/detail/character_parts.hpp"
@@ -197,6 +200,45 @@ inline floating_model wu2010_biped(const wu2010_biped_options& opt = {}) {
               .length = upper,
               .segment_end = {0, 0, upper}});
   return b.build();
+}
+
+/// The capsule of a foot for inter-leg collisions (ours): along the sole, of radius half the foot's
+/// width, spanning its sole contact points (heel to toe, the sole plane as its bottom).
+inline collision_capsule wu2010_foot_capsule(const floating_model& m, int foot) {
+  double x0 = 1e9, x1 = -1e9, z = 0.0, half_width = 0.0;
+  int n = 0;
+  for (const contact_point& c : m.contact_points) {
+    if (c.body != foot || c.role == contact_point::kind::toe_top) continue;
+    x0 = std::min(x0, c.position.x());
+    x1 = std::max(x1, c.position.x());
+    half_width = std::max(half_width, std::abs(c.position.y()));
+    z = c.position.z();
+    ++n;
+  }
+  check_argument(n > 0 && half_width > 0.0 && x1 - x0 > 2.0 * half_width, "body ", foot,
+                 " of model '", m.name, "' has no sole contact points a foot capsule fits");
+  const double r = half_width;
+  return {foot, vec3(x0 + r, 0.0, z + r), vec3(x1 - r, 0.0, z + r), r};
+}
+
+/// Wu & Popovic 2010's inter-leg collisions (contact/self_contact.hpp; PhysX collides the legs,
+/// Sec. 9) for a wu2010_biped (any of its variants): each of the left thigh, shank and foot
+/// against each of the right ones, 9 pairs; thighs and shanks are their shapes' capsules, the
+/// feet wu2010_foot_capsule's.
+inline self_contact_parameters wu2010_leg_collisions(const floating_model& m) {
+  const auto capsule_of = [&](const std::string& name) -> collision_capsule {
+    const int b = m.body_index(name);  // throws naming a missing body
+    if (name.ends_with("foot")) return wu2010_foot_capsule(m, b);
+    for (const shape& s : m.bodies[static_cast<std::size_t>(b)].shapes)
+      if (s.type == shape::kind::capsule) return {b, s.p0, s.p1, s.radius};
+    throw std::invalid_argument("wu2010_leg_collisions: body '" + name + "' has no capsule");
+  };
+  self_contact_parameters p;
+  for (const char* l : {"lthigh", "lshank", "lfoot"})
+    for (const char* r : {"rthigh", "rshank", "rfoot"})
+      p.pairs.push_back({capsule_of(l), capsule_of(r)});
+  validate(m, p);
+  return p;
 }
 
 }  // namespace gaitsynth

@@ -7,6 +7,7 @@
 
 #include "gaitsynth/contact/penalty_contact.hpp"
 #include "gaitsynth/contact/push.hpp"
+#include "gaitsynth/contact/self_contact.hpp"
 #include "gaitsynth/model/state.hpp"
 #include "gaitsynth/rollout/trajectory.hpp"
 
@@ -65,7 +66,10 @@ struct rollout_options {
   bool implicit_joint_damping = false;
 
   contact_parameters contact{};  ///< penalty contact (kp 75000 N/m, kd 2000 N s/m, mu 1)
-  std::vector<push> pushes;      ///< external pushes (force on a body's COM over a time window)
+  /// Collisions between the character's own bodies (contact/self_contact.hpp), e.g. Wu &
+  /// Popovic 2010's legs (wu2010_leg_collisions); no pairs (the default): none.
+  self_contact_parameters self_contact{};
+  std::vector<push> pushes;  ///< external pushes (force on a body's COM over a time window)
 
   trajectory* record = nullptr;  ///< if set, the rollout is recorded into it
   int record_every = 1;          ///< physics steps per recorded frame (40 at 2400 Hz: 60 fps)

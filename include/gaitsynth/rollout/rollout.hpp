@@ -20,7 +20,8 @@
 ///   1. forward kinematics of (q, v); COM and COM velocity;
 ///   2. stop if fallen (COM below the fall height above the terrain), stalled (options.stall) or
 ///      k reached the horizon;
-///   3. clear external wrenches; penalty contact against the terrain; pushes (into ws.f_ext) — done
+///   3. clear external wrenches; penalty contact against the terrain; self-collision (options.
+///      self_contact, when it has pairs); pushes (into ws.f_ext) — done
 ///      before sensing so that controllers see this step's contact flags;
 ///   4. the actuator's sensed values; push the sample into the delay history; once per controller
 ///      period, the controller writes the command (held in between). Controllers read the step's
@@ -280,6 +281,7 @@ rollout_result rollout_impl(const model<Root>& m, const Actuator& act, C& ctrl,
   scr.tau_passive.setZero();
   scr.tau_total.setZero();
   validate(opt.contact);
+  validate(m, opt.self_contact);
   scr.contacts.reset();
   // An actuator with continuous dynamics is integrated with (q, v) when the integrator can
   // (actuators/concept.hpp, derivative): one ODE, the torques re-evaluated at every stage.
@@ -505,9 +507,10 @@ rollout_result rollout_impl(const model<Root>& m, const Actuator& act, C& ctrl,
       next_stall_check += stall_steps;
     }
     if (k >= n_steps) break;
-    // 3. contact and pushes
+    // 3. contact, self-collision and pushes
     clear_external_wrenches(ws);
     apply_contact_forces(m, ws, ground, opt.contact, scr.contacts, dt);
+    if (!opt.self_contact.pairs.empty()) apply_self_contact_forces(m, ws, opt.self_contact);
     if (!opt.pushes.empty()) apply_pushes(m, ws, std::span<const push>(opt.pushes), t);
     // 4. sense and command
     if (num_sensed > 0) sense_actuator();
