@@ -20,6 +20,7 @@
 //               [--controller-rate HZ] [--sigma S] [--cost-timestep S]
 //               [--stance-target planned_landing|touchdown] [--no-helper]
 //               [--divergence fall|infinite] [--robust-starts K] [--start-sigma S]
+//               [--leg-collisions on|off]
 //   wu2010_walk --resume DIR [--threads N]
 //   wu2010_walk --replay FILE [--check-seconds S] [--out DIR]
 //               [--body normal|inverted_knees|frozen_left_knee] [--push-force N]
@@ -61,6 +62,12 @@
 // library's default, which f1, f2 and f3 used and a --resume of a run that did not record the
 // option keeps). With +infinity a helper-free stage whose candidates mostly diverge cannot rank
 // them.
+//
+// --leg-collisions (Sec. 9: "benign inter-leg collisions ... are allowed to happen" in the paper's
+// PhysX; default on): the thighs, shanks and feet of the two legs collide (wu2010_leg_collisions,
+// contact/self_contact.hpp); off lets them pass through each other, as runs f1-f8 did (a --resume
+// of a run that did not record the option keeps off; --replay follows the saved controller's
+// "leg_collisions", false when it has none).
 //
 // --robust-starts K (ours, as wang2009_walk's and wang2012_walk's): K more rollouts per candidate
 // on the iteration's terrain from starts whose joint velocities are perturbed by a seeded
@@ -171,6 +178,8 @@ struct cli {
   double push_force = 350.0;    // N, Sec. 9
   bool terrain_blind = false;   // planner_setup::terrain_awareness = false
   bool terrain_blind_given = false;
+  std::string leg_collisions = "on";  // Sec. 9: PhysX collides the legs
+  bool leg_collisions_given = false;
   double helper_weight = 5e-3;    // eq. 7's w_h (Sec. 8.3)
   std::string terrain = "mixed";  // Sec. 8.3: height fields and boxes
   int robust_starts = 0;          // ours: more rollouts per candidate from perturbed starts
@@ -257,12 +266,17 @@ cli parse(int argc, char** argv) {
   app.add_option("--start-sigma", c.start_sigma,
                  "the perturbed starts' joint velocity perturbation, rad/s (N(0, sigma^2))")
       ->check(example_cli::in_range(0.0, 100.0));
+  app.add_option("--leg-collisions", c.leg_collisions,
+                 "the legs collide with each other (on: Sec. 9's PhysX) or pass through (off; a "
+                 "saved controller's own when replaying)")
+      ->check(CLI::IsMember({"on", "off"}));
   app.add_flag("--terrain-blind", c.terrain_blind,
                "plan without sampling the terrain (the stance foot's ground plane)");
   example_cli::parse(app, argc, argv);
   c.controller_rate_given = app.count("--controller-rate") > 0;
   c.stance_target_given = app.count("--stance-target") > 0;
   c.terrain_blind_given = app.count("--terrain-blind") > 0;
+  c.leg_collisions_given = app.count("--leg-collisions") > 0;
   if (!resume.empty()) {
     example_cli::reparse_recorded(app, argv[0], resume, {"threads"});
     // Runs from before --cost-timestep existed summed eq. 6 per physics step.
@@ -273,6 +287,8 @@ cli parse(int argc, char** argv) {
       c.divergence = "infinite";
     if (std::find(recorded.begin(), recorded.end(), "--terrain") == recorded.end())
       c.terrain = "fields";  // runs from before --terrain trained on height fields only
+    if (std::find(recorded.begin(), recorded.end(), "--leg-collisions") == recorded.end())
+      c.leg_collisions = "off";  // runs from before --leg-collisions had none
     out = resume;
     c.resume = true;
   }
@@ -351,8 +367,11 @@ sim_state start_on(const floating_model& m, const T& ground) {
 }
 
 /// The rollout options of the optimization and the check (2400 Hz, penalty contact).
-rollout_options base_options() {
-  return rollout_options{};
+/// The rollouts' options: the library's defaults, with the legs colliding when `legs`.
+rollout_options base_options(const floating_model& m, bool legs) {
+  rollout_options o;
+  if (legs) o.self_contact = wu2010_leg_collisions(m);
+  return o;
 }
 
 /// The median of `x` (m), null when empty (a walk that fell before a complete swing).
@@ -387,6 +406,7 @@ int run(const cli& c) {
   double rate = c.controller_rate;  // Hz; 0: every physics step
   planned_walk_options po;          // Sec. 8.3's forward walk (r = 0.65 m, t_h = 0.55 s)
   bool terrain_blind = c.terrain_blind;
+  bool legs = c.leg_collisions == "on";
   po.helper_force = !c.no_helper;
   po.stance_target = c.stance_target == "touchdown" ? stance_foot_target::touchdown
                                                     : stance_foot_target::planned_landing;
@@ -399,6 +419,11 @@ int run(const cli& c) {
     if (!c.terrain_blind_given && s.info.contains("terrain_blind") &&
         s.info["terrain_blind"].is_boolean())
       terrain_blind = s.info["terrain_blind"].get<bool>();
+    // Replaying: the saved controller's legs (none recorded: from before the option, no
+    // collisions).
+    if (!c.replay.empty() && !c.leg_collisions_given)
+      legs = s.info.contains("leg_collisions") && s.info["leg_collisions"].is_boolean() &&
+             s.info["leg_collisions"].get<bool>();
     if (!c.replay.empty()) po.helper_force = saved.helper_force;
   }
   po.period = rate > 0.0 ? 1.0 / rate : 0.0;
@@ -432,7 +457,7 @@ int run(const cli& c) {
   wu2010_objective_options cost_options;
   cost_options.timestep = c.cost_timestep;
   cost_options.helper.w_h = c.helper_weight;
-  rollout_options opt = base_options();
+  rollout_options opt = base_options(m, legs);
   opt.initial_state = start_on(m, ground);
   opt.score_divergence = c.divergence == "fall";
   const auto obj =
@@ -492,6 +517,7 @@ int run(const cli& c) {
       info["controller_rate"] = rate;
       info["stance_target"] = stance_target;
       info["terrain_blind"] = terrain_blind;
+      info["leg_collisions"] = legs;
       info["helper_weight"] = c.helper_weight;
       info["terrain"] = c.terrain;
       info["cost_timestep"] = c.cost_timestep;
@@ -553,7 +579,7 @@ int run(const cli& c) {
   }
   const double h_max = helper ? best[static_cast<Eigen::Index>(ctrl.helper_offset())] : 0.0;
   const auto check_obj = wu2010_objective(plain.report_layout(), cost_options);
-  rollout_options check = walk_options(base_options());
+  rollout_options check = walk_options(base_options(m, legs));
   check.duration = c.check_seconds;
   auto scratch = make_rollout_scratch(m);
   const std::span<const double> px(plain_x.data(), static_cast<std::size_t>(plain_x.size()));
@@ -650,6 +676,7 @@ int run(const cli& c) {
   sum["fields_walked"] = fields_walked;
   sum["median_swing_clearance"] = median_or_null(clearances);  // m, over the fields' swings
   sum["terrain_blind"] = terrain_blind;
+  sum["leg_collisions"] = legs;
   sum["fields"] = 10;
   sum["field_checks"] = per_field;
   sum["boxes_walked"] = boxes_walked;  // of 10 unseen grids of boxes
