@@ -1,7 +1,9 @@
 // Contact benchmarks: penalty forces for the Wang 2009 humanoid's 16 foot and toe points on each
 // terrain type (kinematics done once outside the loop), the 7-link planar human's 4 points on the
-// planar path and on the general path, terrain queries, and one full physics step (kinematics +
-// contact + ABA + semi-implicit Euler) standing on flat ground.
+// planar path and on the general path, terrain queries, one full physics step (kinematics +
+// contact + ABA + semi-implicit Euler) standing on flat ground, and Wu & Popovic's 9 inter-leg
+// capsule pairs (self_contact.hpp) apart (the rollout's per-step cost when the legs do not touch)
+// and overlapping.
 #include <benchmark/benchmark.h>
 
 #include <random>
@@ -11,6 +13,7 @@
 #include "gaitsynth/contact/height_field_terrain.hpp"
 #include "gaitsynth/contact/penalty_contact.hpp"
 #include "gaitsynth/contact/push.hpp"
+#include "gaitsynth/contact/self_contact.hpp"
 #include "gaitsynth/contact/slope_terrain.hpp"
 #include "gaitsynth/contact/steps_terrain.hpp"
 #include "gaitsynth/dynamics/aba.hpp"
@@ -18,6 +21,7 @@
 #include "gaitsynth/models/sharon2005.hpp"
 #include "gaitsynth/models/standing.hpp"
 #include "gaitsynth/models/wang2009.hpp"
+#include "gaitsynth/models/wu2010.hpp"
 
 using namespace gaitsynth;
 
@@ -131,6 +135,34 @@ static void BM_contact_with_pushes(benchmark::State& state) {
   }
 }
 BENCHMARK(BM_contact_with_pushes);
+
+/// Wu's biped in the neutral pose (`adduction` 0: no pair touches, the broad phase rejects most)
+/// or with its left hip adducted so that the left leg overlaps the right (pairs touching).
+static void self_contact_legs(benchmark::State& state, double adduction) {
+  const floating_model m = wu2010_biped();
+  const self_contact_parameters p = wu2010_leg_collisions(m);
+  auto ws = make_workspace(m);
+  Eigen::VectorXd q = make_state(m).q, v = Eigen::VectorXd::Zero(m.nv());
+  q[floating_root::nq + m.dof_index("lhip_x")] = -adduction;
+  forward_kinematics(m, ws, q, v);
+  int touching = 0;
+  for (auto _ : state) {
+    clear_external_wrenches(ws);
+    touching = apply_self_contact_forces(m, ws, p);
+    benchmark::DoNotOptimize(ws.f_ext.data());
+    benchmark::ClobberMemory();
+  }
+  state.counters["pairs"] = static_cast<double>(p.pairs.size());
+  state.counters["touching"] = touching;
+}
+static void BM_self_contact_legs_apart(benchmark::State& s) {
+  self_contact_legs(s, 0.0);
+}
+BENCHMARK(BM_self_contact_legs_apart);
+static void BM_self_contact_legs_overlapping(benchmark::State& s) {
+  self_contact_legs(s, 0.14);
+}
+BENCHMARK(BM_self_contact_legs_overlapping);
 
 /// One physics step: kinematics, contact, ABA, semi-implicit Euler (zero joint torques; the state
 /// is reset every 64 steps so it stays a standing contact state).
