@@ -20,7 +20,7 @@
 //               [--controller-rate HZ] [--sigma S] [--cost-timestep S]
 //               [--stance-target planned_landing|touchdown] [--no-helper]
 //               [--divergence fall|infinite] [--robust-starts K] [--start-sigma S]
-//               [--leg-collisions on|off]
+//               [--leg-collisions on|off] [--task f|b|s]
 //   wu2010_walk --resume DIR [--threads N]
 //   wu2010_walk --replay FILE [--check-seconds S] [--out DIR]
 //               [--body normal|inverted_knees|frozen_left_knee] [--push-force N]
@@ -69,6 +69,15 @@
 // of a run that did not record the option keeps off; --replay follows the saved controller's
 // "leg_collisions", false when it has none).
 //
+// --task (Table 2's cyclical controllers; Sec. 8.3: r = 0.65 m forward and backward, 0 standing):
+// f, the forward walk (the default); b, the backward walk, started facing -x so that it moves
+// along +x, the training terrain's long axis (the planner is orientation invariant, appendix A);
+// s, the stand, judged by not falling (no stall rule; its pushes pass while it stands). The
+// check's push directions are world axes, +x the movement (for b, behind the character). Recorded
+// in the saved controller, which
+// --replay follows. The side steps l and r need the asymmetric planner (their half-cycles are not
+// mirror images), which the saved-controller format does not read yet.
+//
 // --robust-starts K (ours, as wang2009_walk's and wang2012_walk's): K more rollouts per candidate
 // on the iteration's terrain from starts whose joint velocities are perturbed by a seeded
 // N(0, S^2) (--start-sigma, 0.05 rad/s; synthesis/robust_variants.hpp), the cost the sum. These
@@ -111,6 +120,7 @@
 #include <iostream>
 #include <map>
 #include <nlohmann/json.hpp>
+#include <numbers>
 #include <optional>
 #include <span>
 #include <stdexcept>
@@ -179,6 +189,8 @@ struct cli {
   bool terrain_blind = false;   // planner_setup::terrain_awareness = false
   bool terrain_blind_given = false;
   std::string leg_collisions = "on";  // Sec. 9: PhysX collides the legs
+  std::string task = "f";             // Table 2's cyclical controllers: f, b, s
+  bool task_given = false;
   bool leg_collisions_given = false;
   double helper_weight = 5e-3;    // eq. 7's w_h (Sec. 8.3)
   std::string terrain = "mixed";  // Sec. 8.3: height fields and boxes
@@ -266,6 +278,10 @@ cli parse(int argc, char** argv) {
   app.add_option("--start-sigma", c.start_sigma,
                  "the perturbed starts' joint velocity perturbation, rad/s (N(0, sigma^2))")
       ->check(example_cli::in_range(0.0, 100.0));
+  app.add_option("--task", c.task,
+                 "the cyclical controller (Table 2): f forward, b backward (r = 0.65 m), s stand "
+                 "(r = 0); a saved controller's own when replaying")
+      ->check(CLI::IsMember({"f", "b", "s"}));
   app.add_option("--leg-collisions", c.leg_collisions,
                  "the legs collide with each other (on: Sec. 9's PhysX) or pass through (off; a "
                  "saved controller's own when replaying)")
@@ -277,6 +293,7 @@ cli parse(int argc, char** argv) {
   c.stance_target_given = app.count("--stance-target") > 0;
   c.terrain_blind_given = app.count("--terrain-blind") > 0;
   c.leg_collisions_given = app.count("--leg-collisions") > 0;
+  c.task_given = app.count("--task") > 0;
   if (!resume.empty()) {
     example_cli::reparse_recorded(app, argv[0], resume, {"threads"});
     // Runs from before --cost-timestep existed summed eq. 6 per physics step.
@@ -360,10 +377,21 @@ field_or_boxes training_terrain(std::uint64_t seed, std::int64_t i, const std::s
 
 /// The neutral pose standing on `ground`.
 template <terrain T>
-sim_state start_on(const floating_model& m, const T& ground) {
+sim_state start_on(const floating_model& m, const T& ground, double facing) {
   sim_state s = make_state(m);
+  s.q.segment<4>(3) << std::cos(0.5 * facing), 0.0, 0.0,
+      std::sin(0.5 * facing);  // yaw (w, x, y, z)
   place_on_terrain(m, ground, s.q);
   return s;
+}
+
+/// --task's goal G = (psi_f, psi_m, r) (Sec. 8.3: r = 0.65 m forward and backward, 0 standing).
+/// Every task moves along +x, the training terrain's long axis: the backward walk starts facing
+/// -x (psi_f = pi), which the planner's orientation invariance (appendix A) allows.
+task_goal task_goal_of(const std::string& task) {
+  if (task == "b") return {std::numbers::pi, 0.0, 0.65};
+  if (task == "s") return {0.0, 0.0, 0.0};
+  return {0.0, 0.0, 0.65};
 }
 
 /// The rollout options of the optimization and the check (2400 Hz, penalty contact).
@@ -407,6 +435,7 @@ int run(const cli& c) {
   planned_walk_options po;          // Sec. 8.3's forward walk (r = 0.65 m, t_h = 0.55 s)
   bool terrain_blind = c.terrain_blind;
   bool legs = c.leg_collisions == "on";
+  std::string task = c.task;
   po.helper_force = !c.no_helper;
   po.stance_target = c.stance_target == "touchdown" ? stance_foot_target::touchdown
                                                     : stance_foot_target::planned_landing;
@@ -425,7 +454,21 @@ int run(const cli& c) {
       legs = s.info.contains("leg_collisions") && s.info["leg_collisions"].is_boolean() &&
              s.info["leg_collisions"].get<bool>();
     if (!c.replay.empty()) po.helper_force = saved.helper_force;
+    // Replaying: the saved controller's task (none recorded: the forward walk).
+    if (!c.replay.empty() && !c.task_given && s.info.contains("task")) {
+      const nlohmann::json& t = s.info["task"];
+      check_argument(t == "f" || t == "b" || t == "s", from,
+                     ": task must be \"f\", \"b\" or \"s\", got ", t.dump());
+      task = t.get<std::string>();
+    }
   }
+  po.goal = task_goal_of(task);
+  // The stand (--task s) is judged by not falling: no stall rule, any speed.
+  walk_criteria criteria;
+  if (task == "s") criteria = {.stall = {.window = 0.0}, .min_average_speed = -1e9};
+  auto word = [&](const walk_check& w) -> std::string {
+    return task == "s" && w.walked ? "stood" : verdict(w);
+  };
   po.period = rate > 0.0 ? 1.0 / rate : 0.0;
   po.setup.terrain_awareness = !terrain_blind;
   const bool helper = po.helper_force;
@@ -458,7 +501,7 @@ int run(const cli& c) {
   cost_options.timestep = c.cost_timestep;
   cost_options.helper.w_h = c.helper_weight;
   rollout_options opt = base_options(m, legs);
-  opt.initial_state = start_on(m, ground);
+  opt.initial_state = start_on(m, ground, po.goal.facing);
   opt.score_divergence = c.divergence == "fall";
   const auto obj =
       cost_objective({1.0, c.fall_penalty}, wu2010_objective(ctrl.report_layout(), cost_options),
@@ -495,7 +538,7 @@ int run(const cli& c) {
     // The terrain of iteration i (from 0): seed * 1000003 + i, the start state placed on it.
     auto use_field = [&](std::int64_t i) {
       field = training_terrain(field_base + static_cast<std::uint64_t>(i), i, c.terrain, c.flat);
-      robust.options.initial_state = start_on(m, ground);
+      robust.options.initial_state = start_on(m, ground, po.goal.facing);
       for (auto& v : robust.variants) v.options.initial_state = robust.options.initial_state;
     };
     if (c.resume && fs::exists(ro.checkpoint_file)) {
@@ -518,6 +561,7 @@ int run(const cli& c) {
       info["stance_target"] = stance_target;
       info["terrain_blind"] = terrain_blind;
       info["leg_collisions"] = legs;
+      info["task"] = task;
       info["helper_weight"] = c.helper_weight;
       info["terrain"] = c.terrain;
       info["cost_timestep"] = c.cost_timestep;
@@ -579,28 +623,30 @@ int run(const cli& c) {
   }
   const double h_max = helper ? best[static_cast<Eigen::Index>(ctrl.helper_offset())] : 0.0;
   const auto check_obj = wu2010_objective(plain.report_layout(), cost_options);
-  rollout_options check = walk_options(base_options(m, legs));
+  rollout_options check = walk_options(base_options(m, legs), criteria);
   check.duration = c.check_seconds;
   auto scratch = make_rollout_scratch(m);
   const std::span<const double> px(plain_x.data(), static_cast<std::size_t>(plain_x.size()));
   auto walk_on = [&](const field_or_boxes& terrain, trajectory* record) {
     field = terrain;
-    check.initial_state = start_on(m, ground);
+    check.initial_state = start_on(m, ground, po.goal.facing);
     check.record = record;
     check.record_every = 40;
     return judge_walk(rollout(m, torque_actuator{}, plain, check_obj, ground, semi_implicit_euler{},
-                              px, check, scratch));
+                              px, check, scratch),
+                      criteria);
   };
   // For comparison, the same walk on flat ground with the helper force of the optimization.
   field = training_terrain(0, 0, "fields", true);
-  check.initial_state = start_on(m, ground);
+  check.initial_state = start_on(m, ground, po.goal.facing);
   check.record = nullptr;
   std::optional<walk_check> helped;
   if (helper)
     helped = judge_walk(
         rollout(m, torque_actuator{}, ctrl, obj, ground, semi_implicit_euler{},
                 std::span<const double>(best.data(), static_cast<std::size_t>(best.size())), check,
-                scratch));
+                scratch),
+        criteria);
   trajectory tr;
   const walk_check flat = walk_on(training_terrain(0, 0, "fields", true), &tr);
   save_csv(stem + ".csv", tr);
@@ -612,7 +658,7 @@ int run(const cli& c) {
     check.initial_velocity_offset = dv;
     const walk_check w = walk_on(training_terrain(0, 0, "fields", true), nullptr);
     perturbed_walked += w.walked ? 1 : 0;
-    per_start.push_back({{"verdict", verdict(w)}, {"time", w.seconds}, {"distance", w.distance}});
+    per_start.push_back({{"verdict", word(w)}, {"time", w.seconds}, {"distance", w.distance}});
   }
   check.initial_velocity_offset.resize(0);
   // 10 unseen height fields (seeds 9001..9010) and 10 unseen box grids (9101..9110).
@@ -630,7 +676,7 @@ int run(const cli& c) {
           peaks.push_back(sw.peak_clearance);
       if (!boxes) clearances.insert(clearances.end(), peaks.begin(), peaks.end());
       out.push_back({{"seed", s},
-                     {"verdict", verdict(w)},
+                     {"verdict", word(w)},
                      {"time", w.seconds},
                      {"distance", w.distance},
                      {"swings", peaks.size()},
@@ -646,9 +692,13 @@ int run(const cli& c) {
   if (c.push_force > 0.0) {
     field = training_terrain(0, 0, "fields", true);
     rollout_options pushed = check;
-    pushed.initial_state = start_on(m, ground);
+    pushed.initial_state = start_on(m, ground, po.goal.facing);
     pushed.record = nullptr;
-    const push_protocol proto{.duration = c.check_seconds, .period = 4.0, .push_duration = 0.1};
+    // Passed: still moving along +x at the end (the stand: still standing).
+    const push_protocol proto{.duration = c.check_seconds,
+                              .period = 4.0,
+                              .push_duration = 0.1,
+                              .min_forward_speed = task == "s" ? -1e9 : 0.1};
     const std::pair<const char*, vec3> directions[] = {{"forward", vec3(1, 0, 0)},
                                                        {"backward", vec3(-1, 0, 0)},
                                                        {"left", vec3(0, 1, 0)},
@@ -666,7 +716,8 @@ int run(const cli& c) {
   }
   nlohmann::ordered_json sum;
   sum["cost"] = best_cost;
-  sum["flat_verdict"] = verdict(flat);
+  sum["task"] = task;
+  sum["flat_verdict"] = word(flat);
   sum["flat_time"] = flat.seconds;
   sum["flat_distance"] = flat.distance;
   sum["flat_speed"] = flat.average_speed;
@@ -691,7 +742,7 @@ int run(const cli& c) {
   sum["h_max"] = h_max;
   sum["helper_force"] = helper;
   if (helped) {
-    sum["helper_flat_verdict"] = verdict(*helped);  // with the helper force, as optimized
+    sum["helper_flat_verdict"] = word(*helped);  // with the helper force, as optimized
     sum["helper_flat_time"] = helped->seconds;
     sum["helper_flat_distance"] = helped->distance;
   }
