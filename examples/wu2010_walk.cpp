@@ -69,14 +69,15 @@
 // of a run that did not record the option keeps off; --replay follows the saved controller's
 // "leg_collisions", false when it has none).
 //
-// --task (Table 2's cyclical controllers; Sec. 8.3: r = 0.65 m forward and backward, 0 standing):
-// f, the forward walk (the default); b, the backward walk, started facing -x so that it moves
-// along +x, the training terrain's long axis (the planner is orientation invariant, appendix A);
-// s, the stand, judged by not falling (no stall rule; its pushes pass while it stands). The
-// check's push directions are world axes, +x the movement (for b, behind the character). Recorded
-// in the saved controller, which
-// --replay follows. The side steps l and r need the asymmetric planner (their half-cycles are not
-// mirror images), which the saved-controller format does not read yet.
+// --task (Table 2's cyclical controllers; Sec. 8.3: r = 0.65 m forward and backward, 0.5 m side
+// steps, 0 standing): f, the forward walk (the default); b, the backward walk, started facing -x
+// so that it moves along +x, the training terrain's long axis (the planner is orientation
+// invariant, appendix A); l and r, the side steps, started facing -y and +y, with the asymmetric
+// planner (each half-cycle its own Omega: 74 parameters, 75 with the helper's h_max; Table 1:
+// "except for symmetric controllers"); s, the stand, judged by
+// not falling (no stall rule; its pushes pass while it stands). The check's push directions are
+// world axes, +x the movement (for b, behind the character). Recorded in the saved controller,
+// which --replay follows.
 //
 // --robust-starts K (ours, as wang2009_walk's and wang2012_walk's): K more rollouts per candidate
 // on the iteration's terrain from starts whose joint velocities are perturbed by a seeded
@@ -189,7 +190,7 @@ struct cli {
   bool terrain_blind = false;   // planner_setup::terrain_awareness = false
   bool terrain_blind_given = false;
   std::string leg_collisions = "on";  // Sec. 9: PhysX collides the legs
-  std::string task = "f";             // Table 2's cyclical controllers: f, b, s
+  std::string task = "f";             // Table 2's cyclical controllers: f, b, l, r, s
   bool task_given = false;
   bool leg_collisions_given = false;
   double helper_weight = 5e-3;    // eq. 7's w_h (Sec. 8.3)
@@ -279,9 +280,9 @@ cli parse(int argc, char** argv) {
                  "the perturbed starts' joint velocity perturbation, rad/s (N(0, sigma^2))")
       ->check(example_cli::in_range(0.0, 100.0));
   app.add_option("--task", c.task,
-                 "the cyclical controller (Table 2): f forward, b backward (r = 0.65 m), s stand "
-                 "(r = 0); a saved controller's own when replaying")
-      ->check(CLI::IsMember({"f", "b", "s"}));
+                 "the cyclical controller (Table 2): f forward, b backward (r = 0.65 m), l, r "
+                 "side steps (0.5 m), s stand (r = 0); a saved controller's own when replaying")
+      ->check(CLI::IsMember({"f", "b", "l", "r", "s"}));
   app.add_option("--leg-collisions", c.leg_collisions,
                  "the legs collide with each other (on: Sec. 9's PhysX) or pass through (off; a "
                  "saved controller's own when replaying)")
@@ -390,6 +391,8 @@ sim_state start_on(const floating_model& m, const T& ground, double facing) {
 /// -x (psi_f = pi), which the planner's orientation invariance (appendix A) allows.
 task_goal task_goal_of(const std::string& task) {
   if (task == "b") return {std::numbers::pi, 0.0, 0.65};
+  if (task == "l") return {-0.5 * std::numbers::pi, 0.0, 0.5};  // facing -y: +x on its left
+  if (task == "r") return {0.5 * std::numbers::pi, 0.0, 0.5};
   if (task == "s") return {0.0, 0.0, 0.0};
   return {0.0, 0.0, 0.65};
 }
@@ -457,12 +460,16 @@ int run(const cli& c) {
     // Replaying: the saved controller's task (none recorded: the forward walk).
     if (!c.replay.empty() && !c.task_given && s.info.contains("task")) {
       const nlohmann::json& t = s.info["task"];
-      check_argument(t == "f" || t == "b" || t == "s", from,
-                     ": task must be \"f\", \"b\" or \"s\", got ", t.dump());
+      check_argument(t == "f" || t == "b" || t == "l" || t == "r" || t == "s", from,
+                     ": task must be \"f\", \"b\", \"l\", \"r\" or \"s\", got ", t.dump());
       task = t.get<std::string>();
     }
   }
   po.goal = task_goal_of(task);
+  // The side steps' half-cycles are not mirror images: each has its own Omega (Table 1's caption:
+  // "except for symmetric controllers").
+  po.symmetry = task == "l" || task == "r" ? planned_walk_symmetry::asymmetric
+                                           : planned_walk_symmetry::mirrored_planner;
   // The stand (--task s) is judged by not falling: no stall rule, any speed.
   walk_criteria criteria;
   if (task == "s") criteria = {.stall = {.window = 0.0}, .min_average_speed = -1e9};
@@ -568,8 +575,8 @@ int run(const cli& c) {
       info["divergence"] = c.divergence;
       info["command"] = c.command;
       save_planned_walk(stem + suffix, names,
-                        std::span<const double>(x.data(), static_cast<std::size_t>(x.size())),
-                        info);
+                        std::span<const double>(x.data(), static_cast<std::size_t>(x.size())), info,
+                        po.symmetry);
     };
     // The distribution's mean, clipped to the bounds: on a new field every iteration the best
     // single sample is partly luck (an easy field), the mean what the search has settled on.

@@ -1,7 +1,8 @@
 // Saved planned_walk controllers (controllers/end_effector/planned_walk_json.hpp): a round trip
-// is exact, values are matched by name (h_max dropped or taken from the file's entry), the options
-// the file records are read back, a saved run of data/wu2010/ binds, and every malformed file is
-// refused naming the file, the field and the value.
+// is exact (also for the side steps' asymmetric planner), values are matched by name (h_max
+// dropped or taken from the file's entry), the options the file records are read back, a saved
+// run of data/wu2010/ binds, and every malformed file is refused naming the file, the field and
+// the value.
 #include <catch2/catch.hpp>
 
 #include <filesystem>
@@ -81,6 +82,36 @@ TEST_CASE("planned_walk JSON: a round trip is exact and values are matched by na
   CHECK(z.back() == 7.5);
 }
 
+TEST_CASE("planned_walk JSON: an asymmetric controller (the side steps) round-trips",
+          "[controllers][end_effector][json]") {
+  const floating_model m = wu2010_biped();
+  planned_walk_options o;
+  o.symmetry = planned_walk_symmetry::asymmetric;
+  const planned_walk<> c(m, flat_terrain{}, o);
+  const std::vector<std::string> names = c.parameter_names();
+  REQUIRE(names.size() == 74);
+  std::vector<double> x = c.default_parameters();
+  for (std::size_t i = 0; i < x.size(); ++i) x[i] += 1e-3 * static_cast<double>(i);
+  const fs::path p = scratch_file("asymmetric.json");
+  save_planned_walk(p, names, x, {}, planned_walk_symmetry::asymmetric);
+  const planned_walk_saved s = load_planned_walk(p);
+  CHECK(s.info["symmetry"] == "asymmetric");
+  const planned_walk_options r = saved_planned_walk_options(s, p);
+  CHECK(r.symmetry == planned_walk_symmetry::asymmetric);
+  const planned_walk<> back(m, flat_terrain{}, r);
+  CHECK(planned_walk_values(s, back.parameter_names(), p) == x);
+  // A mirrored_planner controller lacks Omega_1: the asymmetric one refuses it, naming the first
+  // missing parameter.
+  const planned_walk<> symmetric(m);
+  const fs::path q = scratch_file("symmetric.json");
+  save_planned_walk(q, symmetric.parameter_names(), symmetric.default_parameters(), {});
+  CHECK(saved_planned_walk_options(load_planned_walk(q), q).symmetry ==
+        planned_walk_symmetry::mirrored_planner);
+  CHECK_THROWS_WITH(
+      planned_walk_values(load_planned_walk(q), names, q),
+      Catch::Contains("symmetric.json: parameter 'omega1.") && Catch::Contains("is missing"));
+}
+
 TEST_CASE("planned_walk JSON: a saved run of data/wu2010 loads and binds",
           "[controllers][end_effector][json]") {
   const fs::path p =
@@ -113,9 +144,9 @@ TEST_CASE("planned_walk JSON: malformed files are refused, named",
   CHECK_THAT(load_error("b.json", "[1, 2]"), Catch::Contains("no JSON object"));
   CHECK_THAT(load_error("c.json", R"({"controller": "fsm"})"),
              Catch::Contains("not a planned_walk controller") && Catch::Contains("\"fsm\""));
-  CHECK_THAT(load_error("d.json", R"({"controller": "planned_walk", "symmetry": "asymmetric",
+  CHECK_THAT(load_error("d.json", R"({"controller": "planned_walk", "symmetry": "lopsided",
                                       "parameter_names": [], "parameters": []})"),
-             Catch::Contains("symmetry \"asymmetric\""));
+             Catch::Contains("symmetry \"lopsided\" is not one of"));
   CHECK_THAT(load_error("e.json", R"({"controller": "planned_walk", "parameters": []})"),
              Catch::Contains("parameter_names"));
   CHECK_THAT(load_error("f.json", R"({"controller": "planned_walk",
@@ -158,6 +189,8 @@ TEST_CASE("planned_walk JSON: malformed files are refused, named",
              Catch::Contains("stance_target") && Catch::Contains("\"heel\""));
   CHECK_THAT(option_error("helper_force", 1),
              Catch::Contains("helper_force must be true or false"));
+  CHECK_THAT(option_error("symmetry", "lopsided"),
+             Catch::Contains("o.json: symmetry must be") && Catch::Contains("\"lopsided\""));
   // A size mismatch on saving.
   CHECK_THROWS_WITH(save_planned_walk(scratch_file("s.json"), names, std::vector<double>{1.0}, {}),
                     Catch::Contains("parameter names but 1 values"));

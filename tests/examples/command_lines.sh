@@ -64,7 +64,7 @@ case "$mode" in
         expect 2 "--robust-starts: '2.5' is not a whole number" -- "$exe" --robust-starts 2.5
         expect 2 "--start-sigma: must be in .*, got nan" -- "$exe" --start-sigma nan
         expect 2 "--leg-collisions: maybe not in \{on,off\}" -- "$exe" --leg-collisions maybe
-        expect 2 "--task: l not in \{f,b,s\}" -- "$exe" --task l
+        expect 2 "--task: sideways not in \{f,b,l,r,s\}" -- "$exe" --task sideways
       fi
       if grep -q -- "--seed" <<<"$help"; then
         expect 2 "--seed: must be in .*, got -3" -- "$exe" --seed -3

@@ -31,6 +31,20 @@
 
 namespace gaitsynth {
 
+/// The saved name of a symmetry: "asymmetric" (the side steps: each half-cycle its own Omega),
+/// "mirrored_planner" (the symmetric controllers the examples optimize) or "mirrored".
+inline const char* symmetry_name(planned_walk_symmetry s) {
+  switch (s) {
+    case planned_walk_symmetry::asymmetric:
+      return "asymmetric";
+    case planned_walk_symmetry::mirrored:
+      return "mirrored";
+    case planned_walk_symmetry::mirrored_planner:
+      break;
+  }
+  return "mirrored_planner";
+}
+
 /// A saved planned_walk: its parameters by name and everything else the file says.
 struct planned_walk_saved {
   std::vector<std::string> names;
@@ -41,16 +55,16 @@ struct planned_walk_saved {
 /// Writes names/x and the entries of `info` to `path` (through a temporary file and a rename, so
 /// a reader never sees half a file). Throws std::invalid_argument for a size mismatch,
 /// std::runtime_error if it cannot write.
-inline void save_planned_walk(const std::filesystem::path& path,
-                              const std::vector<std::string>& names, std::span<const double> x,
-                              const nlohmann::ordered_json& info,
-                              const std::string& symmetry = "mirrored_planner") {
+inline void save_planned_walk(
+    const std::filesystem::path& path, const std::vector<std::string>& names,
+    std::span<const double> x, const nlohmann::ordered_json& info,
+    planned_walk_symmetry symmetry = planned_walk_symmetry::mirrored_planner) {
   check_argument(names.size() == x.size(), "save_planned_walk: ", names.size(),
                  " parameter names but ", x.size(), " values");
   nlohmann::ordered_json j;
   j["controller"] = "planned_walk";
   j["paper"] = "Wu & Popovic 2010, Sec. 7-8";
-  j["symmetry"] = symmetry;
+  j["symmetry"] = symmetry_name(symmetry);
   j["parameter_names"] = names;
   j["parameters"] = std::vector<double>(x.begin(), x.end());
   for (const auto& [k, v] : info.items()) j[k] = v;
@@ -63,8 +77,8 @@ inline void save_planned_walk(const std::filesystem::path& path,
   std::filesystem::rename(tmp, path);
 }
 
-/// Reads `path`: a planned_walk controller with mirrored_planner symmetry (the one the examples
-/// optimize), names and values of equal count, every value a finite number.
+/// Reads `path`: a planned_walk controller (any symmetry; none recorded: mirrored_planner), names
+/// and values of equal count, every value a finite number.
 inline planned_walk_saved load_planned_walk(const std::filesystem::path& path) {
   std::ifstream in(path);
   if (!in) throw std::runtime_error("cannot read " + path.string());
@@ -81,8 +95,10 @@ inline planned_walk_saved load_planned_walk(const std::filesystem::path& path) {
   if (!j.contains("controller") || j["controller"] != "planned_walk")
     fail("not a planned_walk controller (\"controller\": " +
          (j.contains("controller") ? j["controller"].dump() : std::string("missing")) + ")");
-  if (j.contains("symmetry") && j["symmetry"] != "mirrored_planner")
-    fail("symmetry " + j["symmetry"].dump() + " is not mirrored_planner, the one this reads");
+  if (j.contains("symmetry") && j["symmetry"] != "mirrored_planner" &&
+      j["symmetry"] != "asymmetric" && j["symmetry"] != "mirrored")
+    fail("symmetry " + j["symmetry"].dump() +
+         " is not one of \"asymmetric\", \"mirrored_planner\", \"mirrored\"");
   if (!j.contains("parameter_names") || !j["parameter_names"].is_array() ||
       !j.contains("parameters") || !j["parameters"].is_array())
     fail("needs the arrays \"parameter_names\" and \"parameters\"");
@@ -142,8 +158,9 @@ inline std::vector<double> planned_walk_values(const planned_walk_saved& s,
 }
 
 /// `base` with what the file records about how the controller ran: "controller_rate" (Hz, 0:
-/// every physics step) as the period, "stance_target" ("planned_landing" or "touchdown") and
-/// "helper_force". Entries the file lacks leave base's values; a malformed one throws, named.
+/// every physics step) as the period, "stance_target" ("planned_landing" or "touchdown"),
+/// "helper_force" and "symmetry". Entries the file lacks leave base's values; a malformed one
+/// throws, named.
 inline planned_walk_options saved_planned_walk_options(const planned_walk_saved& s,
                                                        const std::filesystem::path& path,
                                                        planned_walk_options base = {}) {
@@ -165,6 +182,17 @@ inline planned_walk_options saved_planned_walk_options(const planned_walk_saved&
       base.stance_target = stance_foot_target::touchdown;
     else
       fail("stance_target", v, "\"planned_landing\" or \"touchdown\"");
+  }
+  if (s.info.contains("symmetry")) {
+    const nlohmann::json& v = s.info["symmetry"];
+    if (v == "asymmetric")
+      base.symmetry = planned_walk_symmetry::asymmetric;
+    else if (v == "mirrored")
+      base.symmetry = planned_walk_symmetry::mirrored;
+    else if (v == "mirrored_planner")
+      base.symmetry = planned_walk_symmetry::mirrored_planner;
+    else
+      fail("symmetry", v, "\"asymmetric\", \"mirrored_planner\" or \"mirrored\"");
   }
   if (s.info.contains("helper_force")) {
     const nlohmann::json& v = s.info["helper_force"];
