@@ -150,6 +150,31 @@ TEST_CASE("inter-leg forces cancel, push apart and damp an approach", "[self_con
   CHECK(approaching > ws.f_ext[rfoot].tail<3>().norm());
 }
 
+TEST_CASE("coincident capsule axes still give finite, balanced forces", "[self_contact]") {
+  const floating_model m = wu2010_biped();
+  auto ws = make_workspace(m);
+  const sim_state s = make_state(m);
+  forward_kinematics(m, ws, s.q, s.v);
+  // Two spheres (zero-length capsules) at the hip's centre, one on each thigh (the hip joints
+  // are at y = +-0.1 m): d = 0, no direction between them.
+  self_contact_parameters p;
+  p.pairs.push_back({{m.body_index("lthigh"), {0, -0.1, 0}, {0, -0.1, 0}, 0.05},
+                     {m.body_index("rthigh"), {0, 0.1, 0}, {0, 0.1, 0}, 0.05}});
+  // And two crossing segments: the thighs' axes moved to pass through the hip's centre.
+  p.pairs.push_back({{m.body_index("lthigh"), {-0.1, -0.1, 0}, {0.1, -0.1, 0}, 0.05},
+                     {m.body_index("rthigh"), {0, 0.0, 0}, {0, 0.2, 0}, 0.05}});
+  validate(m, p);
+  clear_external_wrenches(ws);
+  CHECK(apply_self_contact_forces(m, ws, p) == 2);
+  vec3 force = vec3::Zero();
+  for (int b = 0; b < m.num_bodies(); ++b) {
+    CHECK(ws.f_ext[b].allFinite());
+    force += ws.f_ext[b].tail<3>();
+  }
+  CHECK(ws.f_ext[m.body_index("lthigh")].tail<3>().norm() > 0.0);
+  CHECK(force.norm() <= 1e-9 * ws.f_ext[m.body_index("lthigh")].tail<3>().norm());
+}
+
 TEST_CASE("a rollout with crossed legs separates them; untouched legs change nothing",
           "[self_contact]") {
   const floating_model m = wu2010_biped();

@@ -14,7 +14,7 @@
 ///   body b gets f_n n at p, body a gets -f_n n at p
 /// Both forces act along one line, so a pair never changes the total linear or angular momentum.
 /// Segments that cross (d = 0) push along the normal of the plane of the two segments (or any
-/// direction normal to a, when parallel).
+/// direction normal to a when they are parallel, or z when a is a point).
 #include <Eigen/Core>
 #include <algorithm>
 #include <cmath>
@@ -128,10 +128,10 @@ int apply_self_contact_forces(const model<Root>& m, workspace<Root>& ws,
     vec3 n;
     if (d > 1e-12) {
       n = gap / d;
-    } else {  // crossing segments: the normal of their plane, else any normal to a
+    } else {  // crossing segments: the normal of their plane, else any normal to a, else z
       n = (a1 - a0).cross(b1 - b0);
-      if (n.squaredNorm() < 1e-24) n = (a1 - a0).unitOrthogonal();
-      if (n.squaredNorm() < 1e-24) n = vec3::UnitZ();
+      if (!(n.squaredNorm() > 1e-24))
+        n = (a1 - a0).squaredNorm() > 1e-24 ? (a1 - a0).unitOrthogonal() : vec3::UnitZ();
       n.normalize();
     }
     const vec3 pt = 0.5 * (ca + q.a.radius * n + cb - q.b.radius * n);
