@@ -6,6 +6,7 @@
 #include <catch2/catch.hpp>
 
 #include <cmath>
+#include <set>
 
 #include "gaitsynth/actuators/pd.hpp"
 #include "gaitsynth/contact/flat_terrain.hpp"
@@ -64,6 +65,20 @@ TEST_CASE("robust_variants: seeded starts, then pushes on the documented schedul
       CHECK((p.force - 80.0 * table1_directions()[(k + i) % 8]).norm() == 0.0);
     }
   }
+  // push_direction_step = pushes: three variants of three pushes cover all eight directions.
+  const auto spread = robust_variants(prob, {.pushes = 3, .push_direction_step = 3});
+  REQUIRE(spread.size() == 3);
+  std::set<int> seen;
+  for (int k = 0; k < 3; ++k) {
+    REQUIRE(spread[k].options.pushes.size() == 4);
+    for (int i = 0; i < 3; ++i) {
+      const vec3 f = spread[k].options.pushes[1 + i].force;
+      CHECK((f - 100.0 * table1_directions()[(k + 3 * i) % 8]).norm() == 0.0);
+      for (int j = 0; j < 8; ++j)
+        if ((f - 100.0 * table1_directions()[j]).norm() == 0.0) seen.insert(j);
+    }
+  }
+  CHECK(seen.size() == 8);
   // A horizon shorter than the first push's end leaves push variants unpushed.
   const auto w = robust_variants(prob, {.pushes = 1, .horizon = 2.3});
   REQUIRE(w.size() == 1);
@@ -77,6 +92,8 @@ TEST_CASE("robust_variants: bad options are refused naming the value") {
   CHECK_THROWS_WITH(robust_variants(prob, {.starts = -1}), Catch::Contains("-1"));
   CHECK_THROWS_WITH(robust_variants(prob, {.starts = 1, .start_sigma = -0.1}),
                     Catch::Contains("sigma") && Catch::Contains("-0.1"));
+  CHECK_THROWS_WITH(robust_variants(prob, {.pushes = 1, .push_direction_step = -2}),
+                    Catch::Contains("push_direction_step") && Catch::Contains("-2"));
   CHECK_THROWS_WITH(robust_variants(prob, {.pushes = 1, .push_force = std::nan("")}),
                     Catch::Contains("push_force") && Catch::Contains("nan"));
   CHECK_THROWS_WITH(robust_variants(prob, {.pushes = 1, .push_period = 0.0}),

@@ -5,9 +5,11 @@
 /// start perturbed by a seeded N(0, start_sigma^2) (rollout/start_perturbations.hpp), then
 /// `pushes` copies pushed on one body for push_duration every push_period seconds from
 /// first_push, with push_force newtons in the eight horizontal directions of Wang et al. 2009
-/// Table 1 (variant k starting at direction k, each later push turning one direction on), as far
-/// as the horizon allows. Every candidate meets the same perturbations, so the cost stays a
-/// deterministic function of the parameters whatever the thread count.
+/// Table 1 (variant k starting at direction k, each later push turning push_direction_step
+/// directions on), as far as the horizon allows: with step = pushes, K variants of n pushes each
+/// spread over the eight directions instead of the first K + n - 1 of them. Every candidate meets
+/// the same perturbations, so the cost stays a deterministic function of the parameters whatever
+/// the thread count.
 ///
 /// The robust stages of the Wang 2009 and Wang 2012 walkers (examples/wang2009_walk.cpp,
 /// examples/wang2012_walk.cpp) use it; seed them apart from a claim test's perturbations, so the
@@ -30,10 +32,11 @@ struct robust_variant_options {
   int pushes = 0;             ///< copies with pushes
   double push_force = 100.0;  ///< N
   std::string push_body = "torso";
-  double first_push = 2.0;     ///< s
-  double push_period = 3.0;    ///< s between push starts
-  double push_duration = 0.4;  ///< s (Wang 2009 Sec. 5, Wang 2012 Sec. 6.4)
-  double horizon = 10.0;       ///< s: pushes that would not end before it are left out
+  double first_push = 2.0;      ///< s
+  double push_period = 3.0;     ///< s between push starts
+  double push_duration = 0.4;   ///< s (Wang 2009 Sec. 5, Wang 2012 Sec. 6.4)
+  double horizon = 10.0;        ///< s: pushes that would not end before it are left out
+  int push_direction_step = 1;  ///< directions each later push of a variant turns on
 };
 
 /// The variants of `prob` (a rollout_problem: its `character` and `options` are read) that `o`
@@ -52,6 +55,8 @@ std::vector<Problem> robust_variants(const Problem& prob, const robust_variant_o
                  "robust_variants: push_period must be finite and > 0, got ", o.push_period);
   check_argument(std::isfinite(o.push_duration) && o.push_duration > 0.0,
                  "robust_variants: push_duration must be finite and > 0, got ", o.push_duration);
+  check_argument(o.push_direction_step >= 0,
+                 "robust_variants: push_direction_step must be >= 0, got ", o.push_direction_step);
   check_argument(std::isfinite(o.horizon) && o.horizon > 0.0,
                  "robust_variants: horizon must be finite and > 0, got ", o.horizon);
   std::vector<Problem> out;
@@ -66,7 +71,8 @@ std::vector<Problem> robust_variants(const Problem& prob, const robust_variant_o
   for (int k = 0; k < o.pushes; ++k) {
     Problem v = prob;
     for (int i = 0; o.first_push + o.push_period * i + o.push_duration < o.horizon; ++i) {
-      const vec3 d = table1_directions()[static_cast<std::size_t>((k + i) % 8)];
+      const vec3 d =
+          table1_directions()[static_cast<std::size_t>((k + i * o.push_direction_step) % 8)];
       v.options.pushes.push_back(
           push{body, o.push_force * d, o.first_push + o.push_period * i, o.push_duration});
     }
