@@ -20,7 +20,7 @@
 //               [--controller-rate HZ] [--sigma S] [--cost-timestep S]
 //               [--stance-target planned_landing|touchdown] [--no-helper]
 //               [--divergence fall|infinite] [--robust-starts K] [--start-sigma S]
-//               [--leg-collisions on|off] [--task f|b|s]
+//               [--leg-collisions on|off] [--task f|b|l|r|s] [--h-max-cap N]
 //   wu2010_walk --resume DIR [--threads N]
 //   wu2010_walk --replay FILE [--check-seconds S] [--out DIR]
 //               [--body normal|inverted_knees|frozen_left_knee] [--push-force N]
@@ -30,6 +30,12 @@
 // continuation, "restart the optimization with a larger value for w_h after the optimization
 // approximately converges to an infeasible solution" (h_max > 0), e.g. from that run's best with
 // --init.
+//
+// --h-max-cap N (ours; default Sec. 8.3's upper bound, 1000 N): a continuation on the bound
+// instead of the weight. h_max's upper bound becomes N, and an --init controller whose h_max is
+// above it starts at N; stages with a falling cap (e.g. 10, 5, 2, 0 N, each from the previous
+// stage's mean) take the help away step by step, where a larger w_h (the paper's continuation)
+// let CMA drop it at once and lose the helped walk (run f6, docs/reproductions/wu2010.md).
 //
 // --terrain-blind (Sec. 4, issue 12's claim 3): plan without sampling the terrain (the swing
 // path over the stance foot's ground plane, planner_setup::terrain_awareness = false; recorded
@@ -193,10 +199,11 @@ struct cli {
   std::string task = "f";             // Table 2's cyclical controllers: f, b, l, r, s
   bool task_given = false;
   bool leg_collisions_given = false;
-  double helper_weight = 5e-3;    // eq. 7's w_h (Sec. 8.3)
-  std::string terrain = "mixed";  // Sec. 8.3: height fields and boxes
-  int robust_starts = 0;          // ours: more rollouts per candidate from perturbed starts
-  double start_sigma = 0.05;      // rad/s, their joint velocities' perturbation
+  double helper_weight = 5e-3;                    // eq. 7's w_h (Sec. 8.3)
+  double h_max_cap = wu2010_h_max_bounds.second;  // N: h_max's upper bound (ours: continuation)
+  std::string terrain = "mixed";                  // Sec. 8.3: height fields and boxes
+  int robust_starts = 0;      // ours: more rollouts per candidate from perturbed starts
+  double start_sigma = 0.05;  // rad/s, their joint velocities' perturbation
   std::string command, out_arg;
   nlohmann::json options;
 };
@@ -268,6 +275,10 @@ cli parse(int argc, char** argv) {
                  "eq. 7's w_h, per N of h_max per timestep (Sec. 8.3: 5e-3; larger for Sec. "
                  "8.2's continuation)")
       ->check(example_cli::in_range(0.0, 1e6));
+  app.add_option("--h-max-cap", c.h_max_cap,
+                 "h_max's upper bound, N (Sec. 8.3: 1000; lower for a continuation that takes the "
+                 "helper away in stages, ours); an --init controller above it starts at it")
+      ->check(example_cli::in_range(-199.0, wu2010_h_max_bounds.second));
   app.add_option("--terrain", c.terrain,
                  "the training terrain per iteration: random height fields, random boxes, or both "
                  "(mixed: boxes on odd iterations; Sec. 8.3's forward walk)")
@@ -494,9 +505,15 @@ int run(const cli& c) {
     x0 = planned_walk_values(s, names, from);
     saved_info = s.info;
   }
+  // --h-max-cap: h_max's upper bound lowered, an initial value above it moved down to it.
+  if (helper) x0[ctrl.helper_offset()] = std::min(x0[ctrl.helper_offset()], c.h_max_cap);
   auto make_space = [&] {
     try {
-      return wu2010_search_space(ctrl, x0);  // throws naming an x0 outside its bounds
+      parameter_space s = wu2010_search_space(ctrl, x0);  // throws naming an x0 outside its bounds
+      if (!helper || c.h_max_cap >= wu2010_h_max_bounds.second) return s;
+      std::vector<parameter_spec> specs = s.parameters();
+      specs[ctrl.helper_offset()].upper = c.h_max_cap;
+      return parameter_space(std::move(specs));
     } catch (const std::invalid_argument& e) {
       if (from.empty()) throw;
       throw std::invalid_argument(from + ": " + e.what());

@@ -65,6 +65,8 @@ case "$mode" in
         expect 2 "--start-sigma: must be in .*, got nan" -- "$exe" --start-sigma nan
         expect 2 "--leg-collisions: maybe not in \{on,off\}" -- "$exe" --leg-collisions maybe
         expect 2 "--task: sideways not in \{f,b,l,r,s\}" -- "$exe" --task sideways
+        expect 2 "--h-max-cap: must be in .*, got -500" -- "$exe" --h-max-cap -500
+        expect 2 "--h-max-cap: must be in .*, got nan" -- "$exe" --h-max-cap nan
       fi
       if grep -q -- "--seed" <<<"$help"; then
         expect 2 "--seed: must be in .*, got -3" -- "$exe" --seed -3
