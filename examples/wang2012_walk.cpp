@@ -18,8 +18,9 @@
 // starts whose joint velocities are perturbed by a seeded N(0, start_sigma^2), the same for every
 // candidate, so the cost stays a deterministic function of the parameters. --robust-pushes K adds
 // K rollouts pushed on the torso for 0.4 s every 3 s (synthesis/robust_variants.hpp), the push-
-// robust walker of Sec. 6.4; each later push of a rollout turns K of Table 1's eight directions
-// on, so K = 3 pushes all eight. --effort picks J_M: the metabolic energy, or the ablations
+// robust walker of Sec. 6.4, --push-force newtons along each of Table 1's eight directions (the
+// diagonals too: Sec. 6.4's "100 N pushes"); each later push of a rollout turns K directions on,
+// so K = 3 pushes all eight. --effort picks J_M: the metabolic energy, or the ablations
 // min_torque (w_M = 5) and min_act (w_M = 60000) of Sec. 6.2. --weaken GAS=0.25 scales both GAS
 // units' F_max (the weakened muscles of Sec. 6.2). A saved controller records its effort, weights
 // and weakness, and a replay uses them unless told otherwise. --gait run starts from Sec. 6.3's
@@ -269,7 +270,8 @@ int run_with(const cli& c, const floating_model& m, const std::vector<musculoten
                                              .pushes = c.robust_pushes,
                                              .push_force = c.push_force,
                                              .horizon = c.horizon,
-                                             .push_direction_step = c.robust_pushes});
+                                             .push_direction_step = c.robust_pushes,
+                                             .push_force_magnitude = true});
       optimize(make_problem_with_variants(prob, std::move(variants)));
     }
   }

@@ -79,6 +79,13 @@ TEST_CASE("robust_variants: seeded starts, then pushes on the documented schedul
     }
   }
   CHECK(seen.size() == 8);
+  // push_force_magnitude: 100 N along the diagonals too, not 100 N per component.
+  const auto unit = robust_variants(prob, {.pushes = 2, .push_force_magnitude = true});
+  REQUIRE(unit.size() == 2);
+  for (const auto& v : unit)
+    for (std::size_t i = 1; i < v.options.pushes.size(); ++i)
+      CHECK(v.options.pushes[i].force.norm() == Approx(100.0).epsilon(1e-14));
+  CHECK(unit[0].options.pushes[2].force.x() == Approx(100.0 / std::sqrt(2.0)).epsilon(1e-14));
   // A horizon shorter than the first push's end leaves push variants unpushed.
   const auto w = robust_variants(prob, {.pushes = 1, .horizon = 2.3});
   REQUIRE(w.size() == 1);

@@ -37,6 +37,9 @@ struct robust_variant_options {
   double push_duration = 0.4;   ///< s (Wang 2009 Sec. 5, Wang 2012 Sec. 6.4)
   double horizon = 10.0;        ///< s: pushes that would not end before it are left out
   int push_direction_step = 1;  ///< directions each later push of a variant turns on
+  /// false: push_force per component, as Table 1 reports forces ((1, 1) at 100 N pushes 141 N);
+  /// true: push_force newtons along every direction (Wang 2012 Sec. 6.4's "100 N pushes").
+  bool push_force_magnitude = false;
 };
 
 /// The variants of `prob` (a rollout_problem: its `character` and `options` are read) that `o`
@@ -71,8 +74,9 @@ std::vector<Problem> robust_variants(const Problem& prob, const robust_variant_o
   for (int k = 0; k < o.pushes; ++k) {
     Problem v = prob;
     for (int i = 0; o.first_push + o.push_period * i + o.push_duration < o.horizon; ++i) {
-      const vec3 d =
+      const vec3& t =
           table1_directions()[static_cast<std::size_t>((k + i * o.push_direction_step) % 8)];
+      const vec3 d = o.push_force_magnitude ? vec3(t.normalized()) : t;
       v.options.pushes.push_back(
           push{body, o.push_force * d, o.first_push + o.push_period * i, o.push_duration});
     }
