@@ -6,6 +6,10 @@
 #   command_lines.sh revision EXE SOURCE_DIR DIR FLAGS...
 #                                        EXE FLAGS --out DIR writes options.json whose
 #                                        build.git_revision is SOURCE_DIR's HEAD (at build time)
+#   command_lines.sh h_max_cap EXE DIR CAP FLAGS...
+#                                        wu2010_walk FLAGS --h-max-cap CAP --out DIR: the saved
+#                                        best's and CMA mean's h_max are at or below CAP, though
+#                                        the run starts from the middle of the bounds, above it
 #   command_lines.sh resume EXE DIR STEM WAIT_FOR FLAGS... -- OTHER_FLAGS...
 #                                        EXE killed (SIGKILL) after its first checkpoint, then 3
 #                                        times at seeded random moments while resuming, and
@@ -157,6 +161,24 @@ case "$mode" in
     # --resume takes the recorded options; others are refused, a missing folder is named.
     expect 1 "cannot be given with it" -- "$exe" --resume "$dir/cut" --check-seconds 3
     expect 1 "no run folder" -- "$exe" --resume "$dir/none"
+    ;;
+  h_max_cap)
+    exe=$1 dir=$2 cap=$3
+    shift 3
+    rm -rf "$dir"
+    if ! "$exe" "$@" --h-max-cap "$cap" --out "$dir" >/dev/null 2>&1; then
+      echo "FAIL: $(basename "$exe") $* --h-max-cap $cap --out $dir failed"; fail=1
+    else
+      for f in wu2010_walk.controller.json wu2010_walk.mean.json; do
+        h=$(python3 -c 'import json,sys; print(json.load(open(sys.argv[1]))["h_max"])' "$dir/$f")
+        if python3 -c 'import sys; sys.exit(0 if float(sys.argv[1]) <= float(sys.argv[2]) else 1)' \
+          "$h" "$cap"; then
+          echo "ok: $f: h_max $h <= $cap"
+        else
+          echo "FAIL: $f: h_max $h above --h-max-cap $cap"; fail=1
+        fi
+      done
+    fi
     ;;
   revision)
     exe=$1 src=$2 dir=$3
