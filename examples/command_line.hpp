@@ -25,6 +25,7 @@
 #include <fstream>
 #include <iostream>
 #include <limits>
+#include <map>
 #include <nlohmann/json.hpp>
 #include <sstream>
 #include <string>
@@ -326,32 +327,72 @@ inline std::vector<std::string> recorded_arguments(const std::filesystem::path& 
 /// --resume DIR: parses the options recorded in DIR/options.json again with `app` (which parsed
 /// the resume command), so the run goes on exactly as it started. The options named in `also`
 /// (those that do not change the result, such as threads) may be given with --resume and keep
-/// the values given now; any other option given is refused.
-inline void reparse_recorded(CLI::App& app, const char* argv0, const std::string& dir,
-                             const std::vector<std::string>& also) {
-  std::vector<std::string> args{argv0};
+/// the values given now. Those named in `continuation` (a change of the problem that the
+/// optimizer's state carries over, such as a penalty weight) replace the recorded value when
+/// given and keep it otherwise; the caller records the change (record_continuation). Any other
+/// option given is refused. Returns the continuation options that were given.
+inline std::vector<std::string> reparse_recorded(
+    CLI::App& app, const char* argv0, const std::string& dir, const std::vector<std::string>& also,
+    const std::vector<std::string>& continuation = {}) {
+  std::vector<std::string> args{argv0}, given;
+  auto named = [](const std::vector<std::string>& v, const std::string& n) {
+    return std::find(v.begin(), v.end(), n) != v.end();
+  };
   for (const CLI::Option* o : all_options(app)) {
     const std::string n = o->get_lnames().empty() ? "" : o->get_lnames().front();
     if (o->count() == 0 || n == "resume") continue;
-    if (std::find(also.begin(), also.end(), n) == also.end()) {
+    if (!named(also, n) && !named(continuation, n)) {
       std::string allowed;
-      for (const std::string& a : also) allowed += (allowed.empty() ? "--" : ", --") + a;
+      for (const auto* list : {&also, &continuation})
+        for (const std::string& a : *list) allowed += (allowed.empty() ? "--" : ", --") + a;
       throw std::invalid_argument("--resume " + dir + ": the run goes on with the options it " +
                                   "recorded; --" + n + " cannot be given with it (only " + allowed +
                                   ")");
     }
+    if (named(continuation, n)) given.push_back(n);
     if (o->get_expected_max() == 0)
       args.push_back("--" + n);
     else
       for (const std::string& r : o->results()) args.insert(args.end(), {"--" + n, r});
   }
   std::vector<std::string> skip = also;
+  skip.insert(skip.end(), given.begin(), given.end());
   skip.insert(skip.end(), {"out", "resume"});
   for (const std::string& a : recorded_arguments(dir, skip)) args.push_back(a);
   std::vector<char*> av;
   for (std::string& a : args) av.push_back(a.data());
   app.clear();
   parse(app, static_cast<int>(av.size()), av.data());
+  return given;
+}
+
+/// A continuation of the run in DIR (reparse_recorded's `continuation` options given with
+/// --resume): DIR/options.json's options take the new values `changed` (name -> value as
+/// written), so later resumes keep them, and its "continuations" list gains an entry with the
+/// command, the time, the iteration the optimizer's state resumed at, and the changed values.
+inline void record_continuation(const std::filesystem::path& dir, const std::string& command,
+                                long long iteration,
+                                const std::map<std::string, std::string>& changed) {
+  const std::filesystem::path file = dir / "options.json";
+  nlohmann::json j;
+  {
+    std::ifstream in(file);
+    if (!in) throw std::runtime_error("cannot read " + file.string());
+    in >> j;
+  }
+  nlohmann::json entry;
+  entry["command"] = command;
+  entry["resumed_utc"] = utc_stamp();
+  entry["from_iteration"] = iteration;
+  for (const auto& [name, value] : changed) {
+    j["options"][name] = value;
+    entry["options"][name] = value;
+  }
+  entry["build"] = build_info();
+  j["continuations"].push_back(entry);
+  std::ofstream out(file);
+  out << j.dump(2) << "\n";
+  if (!out) throw std::runtime_error("cannot write " + file.string());
 }
 
 }  // namespace example_cli

@@ -21,15 +21,17 @@
 //               [--stance-target planned_landing|touchdown] [--no-helper]
 //               [--divergence fall|infinite] [--robust-starts K] [--start-sigma S]
 //               [--leg-collisions on|off] [--task f|b|l|r|s] [--h-max-cap N]
-//   wu2010_walk --resume DIR [--threads N]
+//   wu2010_walk --resume DIR [--threads N] [--helper-weight W]
 //   wu2010_walk --replay FILE [--check-seconds S] [--out DIR]
 //               [--body normal|inverted_knees|frozen_left_knee] [--push-force N]
 //               [--terrain-blind] [--helper-weight W]
 //
 // --helper-weight (eq. 7's w_h, default Sec. 8.3's 5e-3 per N per timestep): Sec. 8.2's
 // continuation, "restart the optimization with a larger value for w_h after the optimization
-// approximately converges to an infeasible solution" (h_max > 0), e.g. from that run's best with
-// --init.
+// approximately converges to an infeasible solution" (h_max > 0): either a new run from that
+// run's best or mean with --init, or that run itself continued, --resume DIR --helper-weight W,
+// which keeps CMA's state (mean, step size, covariance) and records the change in options.json
+// ("continuations": the iteration, the command, the new value; later resumes keep it).
 //
 // --h-max-cap N (ours; default Sec. 8.3's upper bound, 1000 N): a continuation on the bound
 // instead of the weight. h_max's upper bound becomes N, and an --init controller whose h_max is
@@ -206,6 +208,7 @@ struct cli {
   double start_sigma = 0.05;  // rad/s, their joint velocities' perturbation
   std::string command, out_arg;
   nlohmann::json options;
+  std::vector<std::string> continued;  // options changed by this --resume (record_continuation)
 };
 
 cli parse(int argc, char** argv) {
@@ -307,7 +310,9 @@ cli parse(int argc, char** argv) {
   c.leg_collisions_given = app.count("--leg-collisions") > 0;
   c.task_given = app.count("--task") > 0;
   if (!resume.empty()) {
-    example_cli::reparse_recorded(app, argv[0], resume, {"threads"});
+    // --helper-weight with --resume: Sec. 8.2's continuation on the run's own CMA state.
+    c.continued =
+        example_cli::reparse_recorded(app, argv[0], resume, {"threads"}, {"helper-weight"});
     // Runs from before --cost-timestep existed summed eq. 6 per physics step.
     const auto recorded = example_cli::recorded_arguments(resume, {});
     if (std::find(recorded.begin(), recorded.end(), "--cost-timestep") == recorded.end())
@@ -568,6 +573,12 @@ int run(const cli& c) {
     if (c.resume && fs::exists(ro.checkpoint_file)) {
       load_checkpoint(cma, ro.checkpoint_file);  // (minimize loads it again) its iteration count
       use_field(cma.status().iteration);
+    }
+    if (!c.continued.empty()) {
+      std::map<std::string, std::string> changed;
+      for (const std::string& n : c.continued) changed[n] = c.options[n].get<std::string>();
+      example_cli::record_continuation(c.out, c.command, c.resume ? cma.status().iteration : 0,
+                                       changed);
     }
     auto save = [&](const Eigen::VectorXd& x, double cost, const optimizer_status& st,
                     const char* suffix = ".controller.json") {

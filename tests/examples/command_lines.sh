@@ -10,6 +10,12 @@
 #                                        wu2010_walk FLAGS --h-max-cap CAP --out DIR: the saved
 #                                        best's and CMA mean's h_max are at or below CAP, though
 #                                        the run starts from the middle of the bounds, above it
+#   command_lines.sh continuation EXE DIR FLAGS...
+#                                        wu2010_walk FLAGS --out DIR, then --resume DIR
+#                                        --helper-weight 0.05 (Sec. 8.2's continuation): options.json
+#                                        takes the weight and lists the continuation with its
+#                                        iteration, the saved controller records the weight, and a
+#                                        second --resume keeps it
 #   command_lines.sh resume EXE DIR STEM WAIT_FOR FLAGS... -- OTHER_FLAGS...
 #                                        EXE killed (SIGKILL) after its first checkpoint, then 3
 #                                        times at seeded random moments while resuming, and
@@ -161,6 +167,34 @@ case "$mode" in
     # --resume takes the recorded options; others are refused, a missing folder is named.
     expect 1 "cannot be given with it" -- "$exe" --resume "$dir/cut" --check-seconds 3
     expect 1 "no run folder" -- "$exe" --resume "$dir/none"
+    ;;
+  continuation)
+    exe=$1 dir=$2
+    shift 2
+    rm -rf "$dir"
+    weights() {  # options.json's weight, the continuations' iterations, the controller's weight
+      python3 -c 'import json, sys
+o = json.load(open(sys.argv[1] + "/options.json"))
+c = json.load(open(sys.argv[1] + "/wu2010_walk.controller.json"))
+print(o["options"]["helper-weight"], [e["from_iteration"] for e in o.get("continuations", [])],
+      c["helper_weight"])' "$dir"
+    }
+    if ! "$exe" "$@" --out "$dir" >/dev/null 2>&1; then
+      echo "FAIL: $(basename "$exe") $* --out $dir failed"; fail=1
+    elif ! "$exe" --resume "$dir" --helper-weight 0.05 >/dev/null 2>&1; then
+      echo "FAIL: $(basename "$exe") --resume $dir --helper-weight 0.05 failed"; fail=1
+    else
+      first=$(weights)
+      "$exe" --resume "$dir" >/dev/null 2>&1
+      second=$(weights)
+      for got in "$first" "$second"; do
+        if [[ "$got" =~ ^0\.05\ \[[1-9][0-9]*\]\ 0\.05$ ]]; then
+          echo "ok: helper weight, continuation iteration, saved weight: $got"
+        else
+          echo "FAIL: after --resume --helper-weight 0.05 (and a plain --resume): $got"; fail=1
+        fi
+      done
+    fi
     ;;
   h_max_cap)
     exe=$1 dir=$2 cap=$3
