@@ -9,10 +9,11 @@
 //   wang2012_walk [--speed 1.25] [--iterations N] [--threads N] [--seed K] [--out DIR]
 //                 [--init FILE] [--horizon S] [--sigma S] [--population N] [--check-seconds S]
 //                 [--robust-starts K] [--start-sigma S] [--weight TERM=W]...
-//                 [--robust-pushes K] [--push-force N] [--effort metabolic|torque|activation]
+//                 [--robust-pushes K] [--push-force N] [--check-pushes N]
+//                 [--effort metabolic|torque|activation]
 //                 [--weaken MTU=F]... [--gait walk|run] [--muscle-svg FILE [--muscle MTU]]
 //   wang2012_walk --resume DIR [--threads N]
-//   wang2012_walk --replay FILE [--check-seconds S] [--out DIR]
+//   wang2012_walk --replay FILE [--check-seconds S] [--check-pushes N] [--out DIR]
 //
 // --robust-starts K (beyond the paper, as wang2009_walk's) adds K rollouts per candidate from
 // starts whose joint velocities are perturbed by a seeded N(0, start_sigma^2), the same for every
@@ -20,12 +21,14 @@
 // K rollouts pushed on the torso for 0.4 s every 3 s (synthesis/robust_variants.hpp), the push-
 // robust walker of Sec. 6.4, --push-force newtons along each of Table 1's eight directions (the
 // diagonals too: Sec. 6.4's "100 N pushes"); each later push of a rollout turns K directions on,
-// so K = 3 pushes all eight. --effort picks J_M: the metabolic energy, or the ablations
-// min_torque (w_M = 5) and min_act (w_M = 60000) of Sec. 6.2. --weaken GAS=0.25 scales both GAS
-// units' F_max (the weakened muscles of Sec. 6.2). A saved controller records its effort, weights
-// and weakness, and a replay uses them unless told otherwise. --gait run starts from Sec. 6.3's
-// running controller instead of the walking one; --iterations 0 checks the initial controller
-// without optimizing it.
+// so K = 3 pushes all eight. --check-pushes N adds Table 1's 40 s push protocol to the check
+// (rollout/push_test.hpp: a 0.4 s push to the torso every 4 s, N newtons along each of the eight
+// directions, one walk each; the summary's pushes_survived). --effort picks J_M: the metabolic
+// energy, or the ablations min_torque (w_M = 5) and min_act (w_M = 60000) of Sec. 6.2. --weaken
+// GAS=0.25 scales both GAS units' F_max (the weakened muscles of Sec. 6.2). A saved controller
+// records its effort, weights and weakness, and a replay uses them unless told otherwise. --gait
+// run starts from Sec. 6.3's running controller instead of the walking one; --iterations 0 checks
+// the initial controller without optimizing it.
 //
 // Every form takes the viewer flags (--html FILE, --filmstrip FILE, --csv FILE, ...) for the
 // check rollout. Writes DIR/wang2012_walk.controller.json, .convergence.csv, .checkpoint, .csv
@@ -79,6 +82,7 @@ struct cli {
   std::map<std::string, double> weaken;  // --weaken MTU=F (Sec. 6.2): F_max x F, both legs
   int robust_pushes = 0;
   double push_force = 100.0;  // N (Sec. 6.4)
+  double check_pushes = 0.0;  // N: the check's 40 s push protocol (0: none)
   double check_seconds = 20.0;
   double horizon = 10.0;  // s, "not falling down for 10 seconds"
   double sigma = 0.005;   // Sec. 5
@@ -134,6 +138,10 @@ cli parse(int argc, char** argv) {
   app.add_option("--robust-pushes", c.robust_pushes, "rollouts per candidate with pushes")
       ->check(example_cli::integer_in(0, 1000));
   app.add_option("--push-force", c.push_force, "force of those pushes, N (Sec. 6.4: 100)")
+      ->check(example_cli::in_range(0.0, 100000.0));
+  app.add_option("--check-pushes", c.check_pushes,
+                 "also check Table 1's 40 s push protocol (a 0.4 s push to the torso every 4 s) "
+                 "with this force, N, along each of its 8 directions (0: not checked)")
       ->check(example_cli::in_range(0.0, 100000.0));
   app.add_option("--effort", c.effort,
                  "J_M: metabolic (Sec. 5.1; default), torque (min_torque) or activation (min_act, "
@@ -379,6 +387,23 @@ int run_with(const cli& c, const floating_model& m, const std::vector<musculoten
     walking += walked(rollout(m, act, prob.controller_with(best), obj, flat_terrain{},
                               semi_implicit_euler{}, bx, po, scratch));
   }
+  // --check-pushes F: Table 1's 40 s protocol (rollout/push_test.hpp) with F newtons along each
+  // of its eight directions, the diagonals too (Sec. 6.4's "100 N pushes"), one walk each.
+  nlohmann::json pushes = nlohmann::json::array();
+  int pushes_survived = 0;
+  if (c.check_pushes > 0.0) {
+    const int torso = m.body_index("torso");
+    for (const vec3& d : table1_directions()) {
+      const push_trial t =
+          push_trial_run(m, act, prob.controller_with(best), flat_terrain{}, semi_implicit_euler{},
+                         bx, opt, torso, vec3(c.check_pushes * d.normalized()));
+      pushes_survived += t.passed ? 1 : 0;
+      pushes.push_back({{"direction", {d.x(), d.y()}},
+                        {"walked", t.passed},
+                        {"time", t.result.time},
+                        {"final_speed", t.final_speed}});
+    }
+  }
   const walk_check w = judge_walk(r);
   nlohmann::json sum;
   sum["cost"] = best_cost;
@@ -389,6 +414,11 @@ int run_with(const cli& c, const floating_model& m, const std::vector<musculoten
   sum["speed"] = w.average_speed;
   sum["target_speed"] = speed;
   sum["perturbed_starts_walked"] = walking;
+  if (c.check_pushes > 0.0) {
+    sum["push_force"] = c.check_pushes;
+    sum["pushes_survived"] = pushes_survived;
+    sum["pushes"] = pushes;
+  }
   sum["standard_scores"] = scores;
   sum["gas"] = gas;
   sum["gait_features_deg"] = features;
