@@ -35,6 +35,14 @@ expect() {  # expect STATUS PATTERN -- command...: the status and a line of stde
     fail=1
   fi
 }
+runs() {  # runs EXE ARGS...: EXE ARGS exits 0, else a FAIL line naming the command
+  local exe=$1
+  shift
+  "$exe" "$@" >/dev/null 2>&1 && return 0
+  echo "FAIL: $(basename "$exe") $* failed"
+  fail=1
+  return 1
+}
 case "$mode" in
   bad_values)
     for exe in "$@"; do
@@ -181,11 +189,7 @@ c = json.load(open(sys.argv[1] + "/wu2010_walk.controller.json"))
 print(o["options"]["helper-weight"], [e["from_iteration"] for e in o.get("continuations", [])],
       c["helper_weight"])' "$dir"
     }
-    if ! "$exe" "$@" --out "$dir" >/dev/null 2>&1; then
-      echo "FAIL: $(basename "$exe") $* --out $dir failed"; fail=1
-    elif ! "$exe" --resume "$dir" --helper-weight 0.05 >/dev/null 2>&1; then
-      echo "FAIL: $(basename "$exe") --resume $dir --helper-weight 0.05 failed"; fail=1
-    else
+    if runs "$exe" "$@" --out "$dir" && runs "$exe" --resume "$dir" --helper-weight 0.05; then
       first=$(weights)
       "$exe" --resume "$dir" >/dev/null 2>&1
       second=$(weights)
@@ -202,9 +206,7 @@ print(o["options"]["helper-weight"], [e["from_iteration"] for e in o.get("contin
     exe=$1 dir=$2 cap=$3
     shift 3
     rm -rf "$dir"
-    if ! "$exe" "$@" --h-max-cap "$cap" --out "$dir" >/dev/null 2>&1; then
-      echo "FAIL: $(basename "$exe") $* --h-max-cap $cap --out $dir failed"; fail=1
-    else
+    if runs "$exe" "$@" --h-max-cap "$cap" --out "$dir"; then
       for f in wu2010_walk.controller.json wu2010_walk.mean.json; do
         h=$(python3 -c 'import json,sys; print(json.load(open(sys.argv[1]))["h_max"])' "$dir/$f")
         if python3 -c 'import sys; sys.exit(0 if float(sys.argv[1]) <= float(sys.argv[2]) else 1)' \
@@ -222,9 +224,7 @@ print(o["options"]["helper-weight"], [e["from_iteration"] for e in o.get("contin
     rm -rf "$dir"
     if ! command -v git >/dev/null || ! head=$(git -C "$src" rev-parse --short=12 HEAD 2>/dev/null); then
       echo "ok: no git or no repository at $src: nothing to compare"
-    elif ! "$exe" "$@" --out "$dir" >/dev/null 2>&1; then
-      echo "FAIL: $(basename "$exe") $* --out $dir failed"; fail=1
-    else
+    elif runs "$exe" "$@" --out "$dir"; then
       rev=$(python3 -c 'import json,sys; print(json.load(open(sys.argv[1]))["build"]["git_revision"])' \
         "$dir/options.json")
       # -dirty: the tree had uncommitted changes when the program was built.
