@@ -18,7 +18,8 @@
 //   wu2010_walk [--iterations N] [--threads N] [--seed K] [--out DIR] [--init FILE]
 //               [--horizon S] [--flat] [--fall-penalty W] [--check-seconds S]
 //               [--controller-rate HZ] [--sigma S] [--cost-timestep S]
-//               [--stance-target planned_landing|touchdown] [--no-helper]
+//               [--stance-target planned_landing|touchdown] [--pin-by frame_geometry|link]
+//               [--no-helper]
 //               [--divergence fall|infinite] [--robust-starts K] [--start-sigma S]
 //               [--leg-collisions on|off] [--task f|b|l|r|s] [--h-max-cap N]
 //   wu2010_walk --resume DIR [--threads N] [--helper-weight W]
@@ -63,6 +64,13 @@
 //
 // Stance target (--stance-target, ours; default the paper's planned_landing): touchdown re-targets
 // the stance foot to where it landed (planned_walk_options::stance_target).
+//
+// --pin-by (Sec. 6.3's contact test, ours to choose: the paper says "the geometry to which a
+// stationary action frame is attached"; default frame_geometry, the frame's own box): link pins
+// every stationary frame of a foot that touches anywhere, so a stance foot rolled onto its toes
+// does not ask eq. 5 to pull its heel down (scripts/wu2010_qp_residuals.cpp measures what the
+// default leaves: docs/reproductions/wu2010.md, "Where eq. 5 falls short"). Recorded in the saved
+// controller ("pin_by"), which --init and --replay follow unless given.
 //
 // Divergence (--divergence, ours): a candidate whose simulation diverges (most often while it
 // falls) is scored like a fall at its last sane step (fall, the default: rollout_options::
@@ -193,6 +201,8 @@ struct cli {
   bool no_helper = false;
   std::string divergence = "fall";  // rollout_options::score_divergence (ours)
   bool stance_target_given = false;
+  std::string pin_by = "frame_geometry";  // lower_level_options::pin_by (Sec. 6.3)
+  bool pin_by_given = false;
   std::string body = "normal";  // Sec. 9's variants: inverted_knees, frozen_left_knee
   double push_force = 350.0;    // N, Sec. 9
   bool terrain_blind = false;   // planner_setup::terrain_awareness = false
@@ -255,6 +265,11 @@ cli parse(int argc, char** argv) {
                  "the stance foot's stationary target: planned_landing (the paper, Fig. 5) or "
                  "touchdown (ours: where it landed; a saved controller's own when replaying)")
       ->check(CLI::IsMember({"planned_landing", "touchdown"}));
+  app.add_option("--pin-by", c.pin_by,
+                 "Sec. 6.3's contact test for pinning a stationary frame: its own geometry "
+                 "(frame_geometry: the heel box for the heel frame) or any of its foot's (link); "
+                 "a saved controller's own when replaying or starting from it")
+      ->check(CLI::IsMember({"frame_geometry", "link"}));
   app.add_flag("--no-helper", c.no_helper,
                "optimize without Sec. 8.2's helper force (no h_max parameter; ours: a second "
                "stage from a helped run's --init)");
@@ -306,6 +321,7 @@ cli parse(int argc, char** argv) {
   example_cli::parse(app, argc, argv);
   c.controller_rate_given = app.count("--controller-rate") > 0;
   c.stance_target_given = app.count("--stance-target") > 0;
+  c.pin_by_given = app.count("--pin-by") > 0;
   c.terrain_blind_given = app.count("--terrain-blind") > 0;
   c.leg_collisions_given = app.count("--leg-collisions") > 0;
   c.task_given = app.count("--task") > 0;
@@ -458,12 +474,14 @@ int run(const cli& c) {
   po.helper_force = !c.no_helper;
   po.stance_target = c.stance_target == "touchdown" ? stance_foot_target::touchdown
                                                     : stance_foot_target::planned_landing;
+  po.lower.pin_by = c.pin_by == "link" ? pin_contact::link : pin_contact::frame_geometry;
   if (!from.empty()) {
     const planned_walk_saved s = load_planned_walk(from);
     const planned_walk_options saved = saved_planned_walk_options(s, from, po);  // validates
     if (!c.controller_rate_given && s.info.contains("controller_rate"))
       rate = s.info["controller_rate"].get<double>();
     if (!c.stance_target_given) po.stance_target = saved.stance_target;
+    if (!c.pin_by_given) po.lower.pin_by = saved.lower.pin_by;
     if (!c.terrain_blind_given && s.info.contains("terrain_blind") &&
         s.info["terrain_blind"].is_boolean())
       terrain_blind = s.info["terrain_blind"].get<bool>();
@@ -497,6 +515,7 @@ int run(const cli& c) {
   const bool helper = po.helper_force;
   const std::string stance_target =
       po.stance_target == stance_foot_target::touchdown ? "touchdown" : "planned_landing";
+  const std::string pin_by = po.lower.pin_by == pin_contact::link ? "link" : "frame_geometry";
   const walk_controller ctrl(m, ground, po);
   const std::vector<std::string> names = ctrl.parameter_names();
 
@@ -594,6 +613,7 @@ int run(const cli& c) {
       info["fall_penalty"] = c.fall_penalty;
       info["controller_rate"] = rate;
       info["stance_target"] = stance_target;
+      info["pin_by"] = pin_by;
       info["terrain_blind"] = terrain_blind;
       info["leg_collisions"] = legs;
       info["task"] = task;
@@ -772,6 +792,7 @@ int run(const cli& c) {
   sum["check_seconds"] = c.check_seconds;
   sum["controller_rate"] = rate;
   sum["stance_target"] = stance_target;
+  sum["pin_by"] = pin_by;
   sum["body"] = c.body;
   sum["cost_timestep"] = c.cost_timestep;
   sum["h_max"] = h_max;

@@ -56,6 +56,7 @@ TEST_CASE("planned_walk JSON: a round trip is exact and values are matched by na
   info["controller_rate"] = 600.0;
   info["stance_target"] = "touchdown";
   info["helper_force"] = true;
+  info["pin_by"] = "link";
   const fs::path p = scratch_file("round_trip.json");
   save_planned_walk(p, names, x, info);
   const planned_walk_saved s = load_planned_walk(p);
@@ -73,6 +74,10 @@ TEST_CASE("planned_walk JSON: a round trip is exact and values are matched by na
   CHECK(r.period == Approx(1.0 / 600.0));
   CHECK(r.stance_target == stance_foot_target::touchdown);
   CHECK(r.helper_force);
+  CHECK(r.lower.pin_by == pin_contact::link);
+  // A file from before "pin_by" keeps the default contact test.
+  CHECK(saved_planned_walk_options(planned_walk_saved{}, p).lower.pin_by ==
+        pin_contact::frame_geometry);
   // A file of the plain controller gives a helper controller's h_max from its "h_max" entry.
   nlohmann::ordered_json info2;
   info2["h_max"] = 7.5;
@@ -189,6 +194,8 @@ TEST_CASE("planned_walk JSON: malformed files are refused, named",
              Catch::Contains("stance_target") && Catch::Contains("\"heel\""));
   CHECK_THAT(option_error("helper_force", 1),
              Catch::Contains("helper_force must be true or false"));
+  CHECK_THAT(option_error("pin_by", "toe"),
+             Catch::Contains("o.json: pin_by must be") && Catch::Contains("\"toe\""));
   CHECK_THAT(option_error("symmetry", "lopsided"),
              Catch::Contains("o.json: symmetry must be") && Catch::Contains("\"lopsided\""));
   // A size mismatch on saving.

@@ -157,6 +157,57 @@ TEST_CASE("Sec. 6.3: a pinned frame's rows leave A and b", "[controllers][end_ef
   CHECK((fx.ws.qp.f - f).norm() > 1.0);
 }
 
+TEST_CASE("Sec. 6.3: pinned_frames' contact test, the frame's own geometry or its foot's",
+          "[controllers][end_effector][qp]") {
+  fixture fx;
+  std::mt19937 rng(64);
+  fx.setup(rng, 100.0);
+  const end_effector_layout& L = fx.L;
+  // Every frame at its target, the targets still: only the contact test decides.
+  frame_states desired = fx.ws.current;
+  for (vec3& v : desired.velocity) v.setZero();
+  // The left foot stands on its toe box alone (rolled onto its toes); the right foot is in the air.
+  std::vector<unsigned char> touching(fx.m.contact_points.size(), 0);
+  int lheel = -1, ltoe = -1;
+  for (int j = 0; j < L.num_action(); ++j) {
+    const action_frame& a = L.action[static_cast<std::size_t>(j)];
+    if (a.name == "lheel") lheel = j;
+    if (a.name == "ltoe_front_lat") ltoe = j;
+  }
+  REQUIRE(lheel >= 0);
+  REQUIRE(ltoe >= 0);
+  for (const int c : L.action[static_cast<std::size_t>(ltoe)].contacts)
+    touching[static_cast<std::size_t>(c)] = 1;
+  std::vector<unsigned char> pinned(L.action.size(), 2);
+  lower_level_options opt;
+  REQUIRE(opt.pin_by == pin_contact::frame_geometry);  // the default, as before the option
+  pinned_frames(L, fx.ws.current, desired, touching, opt, pinned);
+  for (int j = 0; j < L.num_action(); ++j) {
+    const action_frame& a = L.action[static_cast<std::size_t>(j)];
+    INFO(a.name);
+    // Own geometry: the heel frame (heel box) is free, the toe and ankle frames (whose boxes
+    // include the toe box) are pinned; nothing on the right foot.
+    CHECK(pinned[static_cast<std::size_t>(j)] == (a.link == 1 && a.name != "lheel"));
+  }
+  opt.pin_by = pin_contact::link;
+  pinned_frames(L, fx.ws.current, desired, touching, opt, pinned);
+  for (int j = 0; j < L.num_action(); ++j) {
+    INFO(L.action[static_cast<std::size_t>(j)].name);
+    CHECK(pinned[static_cast<std::size_t>(j)] == (L.action[static_cast<std::size_t>(j)].link == 1));
+  }
+  // The other two tests still apply to every frame: the heel's target past eps_p, or moving.
+  desired.position[static_cast<std::size_t>(lheel)].z() += 1.01 * opt.eps_p;
+  pinned_frames(L, fx.ws.current, desired, touching, opt, pinned);
+  CHECK(pinned[static_cast<std::size_t>(lheel)] == 0);
+  CHECK(pinned[static_cast<std::size_t>(ltoe)] == 1);
+  desired.position[static_cast<std::size_t>(lheel)] =
+      fx.ws.current.position[static_cast<std::size_t>(lheel)];
+  desired.velocity[static_cast<std::size_t>(lheel)] = vec3(0.0, 1.01 * opt.eps_pdot, 0.0);
+  pinned_frames(L, fx.ws.current, desired, touching, opt, pinned);
+  CHECK(pinned[static_cast<std::size_t>(lheel)] == 0);
+  CHECK(pinned[static_cast<std::size_t>(ltoe)] == 1);
+}
+
 TEST_CASE("appendix B: the canceling QP removes what J^T f can produce (eq. 12)",
           "[controllers][end_effector][qp]") {
   fixture fx;

@@ -27,8 +27,21 @@
 
 namespace gaitsynth {
 
+/// Sec. 6.3's contact test for pinning: "the geometry to which a stationary action frame is
+/// attached is in contact with the ground". Which geometry that is the paper leaves open.
+enum class pin_contact {
+  /// The frame's own geometry (action_frame::contacts: the toe box for a toe frame, the heel box
+  /// for the heel frame, both for the ankle frame): a stance foot rolled onto its toes unpins its
+  /// heel frame, whose ideal force then competes with the upper body's (the default, as before).
+  frame_geometry,
+  /// The whole link (the foot: any of its frames' geometry): every stationary frame of a foot
+  /// that touches anywhere is pinned, so a rolling stance foot keeps out of eq. 5's objective.
+  link
+};
+
 struct lower_level_options {
   force_qp_options qp{};
+  pin_contact pin_by = pin_contact::frame_geometry;  ///< Sec. 6.3's contact test
   double eps_p = 0.2;        ///< Sec. 6.3: pinned only within this distance of the target (m)
   double eps_pdot = 0.05;    ///< Sec. 6.3: and when the target moves slower than this (m/s)
   bool knee_control = true;  ///< appendix B
@@ -99,14 +112,20 @@ inline void check_link_targets(const std::vector<link_target>& targets) {
   }
 }
 
-/// Sec. 6.3: action frame j is pinned when a contact point of its geometry touches, its position
-/// is within eps_p of its target and its target moves slower than eps_pdot.
+/// Sec. 6.3: action frame j is pinned when a contact point of its geometry (options.pin_by: its
+/// own, or any frame's on its link) touches, its position is within eps_p of its target and its
+/// target moves slower than eps_pdot.
 inline void pinned_frames(const end_effector_layout& L, const frame_states& current,
                           const frame_states& desired, std::span<const unsigned char> touching,
                           const lower_level_options& opt, std::span<unsigned char> pinned) {
+  const auto touches = [&](int j) {
+    if (opt.pin_by == pin_contact::frame_geometry) return frame_touches(L.action[j], touching);
+    for (const action_frame& a : L.action)
+      if (a.link == L.action[j].link && frame_touches(a, touching)) return true;
+    return false;
+  };
   for (int j = 0; j < L.num_action(); ++j) {
-    pinned[j] = frame_touches(L.action[j], touching) &&
-                (desired.position[j] - current.position[j]).norm() < opt.eps_p &&
+    pinned[j] = touches(j) && (desired.position[j] - current.position[j]).norm() < opt.eps_p &&
                 desired.velocity[j].norm() < opt.eps_pdot;
   }
 }

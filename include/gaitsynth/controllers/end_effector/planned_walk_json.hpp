@@ -159,8 +159,8 @@ inline std::vector<double> planned_walk_values(const planned_walk_saved& s,
 
 /// `base` with what the file records about how the controller ran: "controller_rate" (Hz, 0:
 /// every physics step) as the period, "stance_target" ("planned_landing" or "touchdown"),
-/// "helper_force" and "symmetry". Entries the file lacks leave base's values; a malformed one
-/// throws, named.
+/// "helper_force", "symmetry" and "pin_by" (Sec. 6.3's contact test: "frame_geometry" or "link").
+/// Entries the file lacks leave base's values; a malformed one throws, named.
 inline planned_walk_options saved_planned_walk_options(const planned_walk_saved& s,
                                                        const std::filesystem::path& path,
                                                        planned_walk_options base = {}) {
@@ -198,6 +198,15 @@ inline planned_walk_options saved_planned_walk_options(const planned_walk_saved&
     const nlohmann::json& v = s.info["helper_force"];
     if (!v.is_boolean()) fail("helper_force", v, "true or false");
     base.helper_force = v.get<bool>();
+  }
+  if (s.info.contains("pin_by")) {
+    const nlohmann::json& v = s.info["pin_by"];
+    if (v == "frame_geometry")
+      base.lower.pin_by = pin_contact::frame_geometry;
+    else if (v == "link")
+      base.lower.pin_by = pin_contact::link;
+    else
+      fail("pin_by", v, "\"frame_geometry\" or \"link\"");
   }
   return base;
 }
