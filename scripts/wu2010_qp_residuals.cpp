@@ -60,6 +60,7 @@ struct residuals {
   /// touch, whose frame was eps_p or more from its target, whose target moved eps_pdot or faster.
   std::vector<std::array<long, 3>> why;
   double eps_p = 0.2, eps_pdot = 0.05;
+  pin_contact pin_by = pin_contact::frame_geometry;
   long commands = 0;
   std::int64_t last_command = -1;
 
@@ -121,7 +122,11 @@ struct residuals {
       const action_frame& a = L->action[static_cast<std::size_t>(j)];
       if (a.link != stance_link || st.lower.pinned[static_cast<std::size_t>(j)]) continue;
       auto& y = why[static_cast<std::size_t>(j)];
-      y[0] += !frame_touches(a, ob.contact_active);
+      bool touches = frame_touches(a, ob.contact_active);
+      if (pin_by == pin_contact::link)  // as pinned_frames: any frame of the foot
+        for (const action_frame& o : L->action)
+          touches = touches || (o.link == a.link && frame_touches(o, ob.contact_active));
+      y[0] += !touches;
       y[1] += (st.lower.desired.position[j] - st.lower.current.position[j]).norm() >= eps_p;
       y[2] += st.lower.desired.velocity[j].norm() >= eps_pdot;
     }
@@ -182,6 +187,9 @@ int main(int argc, char** argv) try {
   residuals res;
   res.L = &c.layout();
   res.h_max = x.back();
+  res.pin_by = po.lower.pin_by;
+  res.eps_p = po.lower.eps_p;
+  res.eps_pdot = po.lower.eps_pdot;
   res.tau_max.resize(m.num_joint_dofs());
   for (int j = 0; j < m.num_joint_dofs(); ++j) res.tau_max[j] = m.dofs[j].torque_limit;
   auto scratch = make_rollout_scratch(m);
