@@ -55,6 +55,7 @@ struct report_log {
   double max_wrench_mismatch = 0.0;  ///< |upper body's external wrench - the helper's|
   double max_com_target_mismatch = 0.0;
   double half_cycle = -1.0;
+  helper_scope scope = helper_scope::all;  ///< the rows the helper acts on (expected)
   std::vector<double> q_final;
   template <class Ob>
   void observe(const Ob& ob) {
@@ -91,6 +92,16 @@ struct report_log {
         for (int j = 0; j < c.layout().num_action(); ++j)
           if (st.lower.pinned[static_cast<std::size_t>(j)]) h.segment<3>(action_row(j)).setZero();
         h = h.cwiseMax(-c.h_max()).cwiseMin(c.h_max());
+        const Eigen::Index n = h.size();
+        if (scope == helper_scope::feet) {
+          h.head<3>().setZero();
+          h.tail<3>().setZero();
+        }
+        if (scope != helper_scope::all && scope != helper_scope::feet) {
+          h.segment(3, n - 6).setZero();
+          if (scope == helper_scope::upper_body_force) h.tail<3>().setZero();
+          if (scope == helper_scope::upper_body_torque) h.head<3>().setZero();
+        }
         max_helper_mismatch = std::max(max_helper_mismatch, (h - st.helper).cwiseAbs().maxCoeff());
         // The upper body touches nothing: its external wrench is the helper's alone, the force
         // at the LA frame plus the torque rows.
@@ -219,4 +230,34 @@ TEST_CASE("planned_walk's helper force: h_max parameter, bounds, off for h_max <
   CHECK(std::get<wu2010_term::helper>(acc).sum ==
         Approx(5e-3 * static_cast<double>(r_on.steps) * (64.0 / 2400.0) * h));
   CHECK(std::get<wu2010_term::helper>(acc).sum > 0.0);
+}
+
+TEST_CASE("planned_walk's helper force on a subset of eq. 4's rows (helper_rows, diagnosis)",
+          "[end_effector][wu2010_cost]") {
+  const floating_model& m = biped();
+  const auto obj = wu2010_objective(planned_walk<>(m).report_layout());
+  std::vector<double> q_final;
+  for (const helper_scope scope :
+       {helper_scope::all, helper_scope::upper_body, helper_scope::upper_body_force,
+        helper_scope::upper_body_torque, helper_scope::feet}) {
+    planned_walk_options o;
+    o.helper_force = true;
+    o.helper_rows = scope;
+    const planned_walk<> c(m, flat_terrain{}, o);
+    std::vector<double> p = c.default_parameters();
+    p.back() = 50.0;
+    report_log log;
+    log.scope = scope;
+    const auto r = run(c, p, obj, log);
+    INFO("scope " << static_cast<int>(scope));
+    CHECK_FALSE(r.diverged());
+    CHECK(log.max_helper > 0.0);
+    CHECK(log.max_helper <= 50.0);
+    // The state's helper is clip(b - A f) on the scope's rows and zero elsewhere, and the upper
+    // body's external wrench is what the scope leaves on its rows (zero for the feet).
+    CHECK(log.max_helper_mismatch < 1e-9);
+    CHECK(log.max_wrench_mismatch < 1e-9);
+    CHECK(log.q_final != q_final);  // each scope moves the walker differently
+    q_final = log.q_final;
+  }
 }

@@ -92,6 +92,15 @@ struct scheduled_goal {
   task_goal goal;
 };
 
+/// The rows of eq. 4 that Sec. 8.2's helper force acts on (planned_walk_options::helper_rows).
+enum class helper_scope {
+  all,                ///< every row (Sec. 8.2)
+  upper_body,         ///< the upper body's force and torque rows
+  upper_body_force,   ///< the upper body's force rows
+  upper_body_torque,  ///< the upper body's torque rows
+  feet                ///< the action frames' rows
+};
+
 struct planned_walk_options {
   /// s between commands; 0: every physics step. The paper runs at 64 Hz (appendix C); our lower
   /// level is not stable with commands held over 1/64 s yet (standing_balance.hpp,
@@ -121,6 +130,9 @@ struct planned_walk_options {
   /// controller as it runs after the optimization).
   bool helper_force = false;
   double h_max = 0.0;  ///< N, h_max for default_parameters() (0: no helper force)
+  /// Which rows of eq. 4 the helper force acts on (ours, for diagnosis: Sec. 8.2 helps every
+  /// row; scripts/wu2010_helper_scope.cpp).
+  helper_scope helper_rows = helper_scope::all;
 };
 
 template <terrain T = flat_terrain, root_joint Root = floating_root>
@@ -485,6 +497,15 @@ class planned_walk {
       if (lw.pinned[static_cast<std::size_t>(j)])
         st.helper.template segment<3>(action_row(j)).setZero();
     st.helper = st.helper.cwiseMax(-h_max_).cwiseMin(h_max_);
+    const helper_scope scope = opt_.helper_rows;
+    if (scope != helper_scope::all && scope != helper_scope::feet) {
+      st.helper.segment(3, st.helper.size() - 6).setZero();
+      if (scope == helper_scope::upper_body_force) st.helper.template tail<3>().setZero();
+      if (scope == helper_scope::upper_body_torque) st.helper.template head<3>().setZero();
+    } else if (scope == helper_scope::feet) {
+      st.helper.template head<3>().setZero();
+      st.helper.template tail<3>().setZero();
+    }
     st.report[R.helper_max] = st.helper.cwiseAbs().maxCoeff();
   }
 
