@@ -22,6 +22,7 @@
 //               [--no-helper]
 //               [--divergence fall|infinite] [--robust-starts K] [--start-sigma S]
 //               [--leg-collisions on|off] [--task f|b|l|r|s] [--h-max-cap N]
+//               [--implicit-damping on|off]
 //   wu2010_walk --resume DIR [--threads N] [--helper-weight W]
 //   wu2010_walk --replay FILE [--check-seconds S] [--out DIR]
 //               [--body normal|inverted_knees|frozen_left_knee] [--push-force N]
@@ -84,6 +85,14 @@
 // contact/self_contact.hpp); off lets them pass through each other, as runs f1-f8 did (a --resume
 // of a run that did not record the option keeps off; --replay follows the saved controller's
 // "leg_collisions", false when it has none).
+//
+// --implicit-damping (ours; default on): the soft joint limits' dampers taken by backward Euler
+// (rollout_options::implicit_joint_damping). The ankle is three Euler angles; its 400 N m (Table
+// 3) pushes it past its range's soft limit toward ankle_y = +-pi/2, where the x and z axes align
+// and the joint-space inertia has a vanishing mode, so explicit dampers diverge (the walks of
+// f9, f13 and f14 that read "diverged" did so there; docs/reproductions/wu2010.md). Off is the
+// explicit step of runs f1-f14 (a --resume of a run that did not record the option keeps it;
+// --replay follows the saved controller's "implicit_damping", false when it has none).
 //
 // --task (Table 2's cyclical controllers; Sec. 8.3: r = 0.65 m forward and backward, 0.5 m side
 // steps, 0 standing): f, the forward walk (the default); b, the backward walk, started facing -x
@@ -207,8 +216,10 @@ struct cli {
   double push_force = 350.0;    // N, Sec. 9
   bool terrain_blind = false;   // planner_setup::terrain_awareness = false
   bool terrain_blind_given = false;
-  std::string leg_collisions = "on";  // Sec. 9: PhysX collides the legs
-  std::string task = "f";             // Table 2's cyclical controllers: f, b, l, r, s
+  std::string leg_collisions = "on";    // Sec. 9: PhysX collides the legs
+  std::string implicit_damping = "on";  // rollout_options::implicit_joint_damping (ours)
+  bool implicit_damping_given = false;
+  std::string task = "f";  // Table 2's cyclical controllers: f, b, l, r, s
   bool task_given = false;
   bool leg_collisions_given = false;
   double helper_weight = 5e-3;                    // eq. 7's w_h (Sec. 8.3)
@@ -316,6 +327,11 @@ cli parse(int argc, char** argv) {
                  "the legs collide with each other (on: Sec. 9's PhysX) or pass through (off; a "
                  "saved controller's own when replaying)")
       ->check(CLI::IsMember({"on", "off"}));
+  app.add_option("--implicit-damping", c.implicit_damping,
+                 "the joint-limit dampers taken implicitly (on; ours: an ankle pushed past its "
+                 "range toward the Euler angles' gimbal lock otherwise diverges) or explicitly "
+                 "(off, as runs f1-f14 did; a saved controller's own when replaying)")
+      ->check(CLI::IsMember({"on", "off"}));
   app.add_flag("--terrain-blind", c.terrain_blind,
                "plan without sampling the terrain (the stance foot's ground plane)");
   example_cli::parse(app, argc, argv);
@@ -324,6 +340,7 @@ cli parse(int argc, char** argv) {
   c.pin_by_given = app.count("--pin-by") > 0;
   c.terrain_blind_given = app.count("--terrain-blind") > 0;
   c.leg_collisions_given = app.count("--leg-collisions") > 0;
+  c.implicit_damping_given = app.count("--implicit-damping") > 0;
   c.task_given = app.count("--task") > 0;
   if (!resume.empty()) {
     // --helper-weight with --resume: Sec. 8.2's continuation on the run's own CMA state.
@@ -339,6 +356,8 @@ cli parse(int argc, char** argv) {
       c.terrain = "fields";  // runs from before --terrain trained on height fields only
     if (std::find(recorded.begin(), recorded.end(), "--leg-collisions") == recorded.end())
       c.leg_collisions = "off";  // runs from before --leg-collisions had none
+    if (std::find(recorded.begin(), recorded.end(), "--implicit-damping") == recorded.end())
+      c.implicit_damping = "off";  // runs from before --implicit-damping integrated explicitly
     out = resume;
     c.resume = true;
   }
@@ -429,11 +448,12 @@ task_goal task_goal_of(const std::string& task) {
   return {0.0, 0.0, 0.65};
 }
 
-/// The rollout options of the optimization and the check (2400 Hz, penalty contact).
-/// The rollouts' options: the library's defaults, with the legs colliding when `legs`.
-rollout_options base_options(const floating_model& m, bool legs) {
+/// The rollouts' options (2400 Hz, penalty contact): the library's defaults, with the legs
+/// colliding when `legs` and the joint-limit dampers implicit when `implicit`.
+rollout_options base_options(const floating_model& m, bool legs, bool implicit) {
   rollout_options o;
   if (legs) o.self_contact = wu2010_leg_collisions(m);
+  o.implicit_joint_damping = implicit;
   return o;
 }
 
@@ -470,6 +490,7 @@ int run(const cli& c) {
   planned_walk_options po;          // Sec. 8.3's forward walk (r = 0.65 m, t_h = 0.55 s)
   bool terrain_blind = c.terrain_blind;
   bool legs = c.leg_collisions == "on";
+  bool implicit = c.implicit_damping == "on";
   std::string task = c.task;
   po.helper_force = !c.no_helper;
   po.stance_target = c.stance_target == "touchdown" ? stance_foot_target::touchdown
@@ -490,6 +511,10 @@ int run(const cli& c) {
     if (!c.replay.empty() && !c.leg_collisions_given)
       legs = s.info.contains("leg_collisions") && s.info["leg_collisions"].is_boolean() &&
              s.info["leg_collisions"].get<bool>();
+    // Replaying: the saved controller's integration (none recorded: explicit dampers).
+    if (!c.replay.empty() && !c.implicit_damping_given)
+      implicit = s.info.contains("implicit_damping") && s.info["implicit_damping"].is_boolean() &&
+                 s.info["implicit_damping"].get<bool>();
     if (!c.replay.empty()) po.helper_force = saved.helper_force;
     // Replaying: the saved controller's task (none recorded: the forward walk).
     if (!c.replay.empty() && !c.task_given && s.info.contains("task")) {
@@ -548,7 +573,7 @@ int run(const cli& c) {
   wu2010_objective_options cost_options;
   cost_options.timestep = c.cost_timestep;
   cost_options.helper.w_h = c.helper_weight;
-  rollout_options opt = base_options(m, legs);
+  rollout_options opt = base_options(m, legs, implicit);
   opt.initial_state = start_on(m, ground, po.goal.facing);
   opt.score_divergence = c.divergence == "fall";
   const auto obj =
@@ -616,6 +641,7 @@ int run(const cli& c) {
       info["pin_by"] = pin_by;
       info["terrain_blind"] = terrain_blind;
       info["leg_collisions"] = legs;
+      info["implicit_damping"] = implicit;
       info["task"] = task;
       info["helper_weight"] = c.helper_weight;
       info["terrain"] = c.terrain;
@@ -678,7 +704,7 @@ int run(const cli& c) {
   }
   const double h_max = helper ? best[static_cast<Eigen::Index>(ctrl.helper_offset())] : 0.0;
   const auto check_obj = wu2010_objective(plain.report_layout(), cost_options);
-  rollout_options check = walk_options(base_options(m, legs), criteria);
+  rollout_options check = walk_options(base_options(m, legs, implicit), criteria);
   check.duration = c.check_seconds;
   auto scratch = make_rollout_scratch(m);
   const std::span<const double> px(plain_x.data(), static_cast<std::size_t>(plain_x.size()));
@@ -783,6 +809,7 @@ int run(const cli& c) {
   sum["median_swing_clearance"] = median_or_null(clearances);  // m, over the fields' swings
   sum["terrain_blind"] = terrain_blind;
   sum["leg_collisions"] = legs;
+  sum["implicit_damping"] = implicit;
   sum["fields"] = 10;
   sum["field_checks"] = per_field;
   sum["boxes_walked"] = boxes_walked;  // of 10 unseen grids of boxes

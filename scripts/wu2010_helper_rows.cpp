@@ -100,6 +100,10 @@ int main(int argc, char** argv) try {
   if (saved.info.contains("leg_collisions") && saved.info["leg_collisions"].is_boolean() &&
       saved.info["leg_collisions"].get<bool>())
     o.self_contact = wu2010_leg_collisions(m);
+  // The saved controller's integration (wu2010_walk --implicit-damping; none recorded: explicit).
+  o.implicit_joint_damping = saved.info.contains("implicit_damping") &&
+                             saved.info["implicit_damping"].is_boolean() &&
+                             saved.info["implicit_damping"].get<bool>();
   o.duration = seconds;
   o.initial_state = make_state(m);
   place_on_terrain(m, flat_terrain{}, o.initial_state.q);

@@ -71,6 +71,7 @@ case "$mode" in
         expect 2 "--stance-target: sideways not in \{planned_landing,touchdown\}" -- \
           "$exe" --stance-target sideways
         expect 2 "--pin-by: heel not in \{frame_geometry,link\}" -- "$exe" --pin-by heel
+        expect 2 "--implicit-damping: yes not in \{on,off\}" -- "$exe" --implicit-damping yes
         expect 2 "--divergence: nan not in \{fall,infinite\}" -- "$exe" --divergence nan
         expect 2 "--cost-timestep: must be in .*, got -1" -- "$exe" --cost-timestep -1
         expect 2 "--cost-timestep: must be in .*, got nan" -- "$exe" --cost-timestep nan
