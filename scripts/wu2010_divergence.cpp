@@ -2,7 +2,9 @@
 // (docs/reproductions/wu2010.md, "Taking the helper away"): walks the controller WITHOUT the
 // helper on flat ground for up to SECONDS, the legs colliding when the saved controller did, every
 // physics step recorded, and prints the COM every 0.25 s, then for the last 30 steps the COM, the
-// fastest joint (rad/s) and the sole contact points touching. Compile against the tree's include/:
+// fastest joint (rad/s), the sole contact points touching and the three angles (x y z, rad) of the
+// ankle on the fastest joint's side (a blow-up at the ankle's Euler gimbal lock, ankle_y -> pi/2,
+// docs/reproductions/wu2010.md, "Where eq. 5 falls short"). Compile against the tree's include/:
 //
 //   g++ -std=c++20 -O2 -DNDEBUG -Iinclude -isystem /usr/include/eigen3
 //       scripts/wu2010_divergence.cpp -o /tmp/wu2010_divergence
@@ -66,9 +68,13 @@ int main(int argc, char** argv) try {
     const double fastest = f.v.tail(f.v.size() - 6).cwiseAbs().maxCoeff(&j);
     int touching = 0;
     for (const unsigned char a : f.contact_active) touching += a;
-    std::printf("t %.4f  COM (%6.3f %6.3f %5.3f) m  fastest joint %-9s %7.1f rad/s  touching %d\n",
-                f.t, f.com.x(), f.com.y(), f.com.z(),
-                m.dofs[static_cast<std::size_t>(j)].name.c_str(), fastest, touching);
+    // The ankle of the fastest joint's side (DOFs 4-6 left, 11-13 right; the waist's: left).
+    const Eigen::Index ankle = (j >= 7 && j < 14 ? 11 : 4) + (f.q.size() - f.v.size() + 6);
+    std::printf(
+        "t %.4f  COM (%6.3f %6.3f %5.3f) m  fastest joint %-9s %7.1f rad/s  touching %d"
+        "  ankle %5.2f %5.2f %5.2f\n",
+        f.t, f.com.x(), f.com.y(), f.com.z(), m.dofs[static_cast<std::size_t>(j)].name.c_str(),
+        fastest, touching, f.q[ankle], f.q[ankle + 1], f.q[ankle + 2]);
   };
   for (std::size_t k = 0; k + 30 < n; k += every) line(tr.frames[k]);
   std::printf("the last steps:\n");
