@@ -10,6 +10,7 @@
 //                 [--init FILE] [--horizon S] [--sigma S] [--population N] [--check-seconds S]
 //                 [--robust-starts K] [--start-sigma S] [--weight TERM=W]...
 //                 [--robust-pushes K] [--push-force N] [--check-pushes N]
+//                 [--push-direction-step D] [--push-period S]
 //                 [--effort metabolic|torque|activation]
 //                 [--weaken MTU=F]... [--gait walk|run] [--muscle-svg FILE [--muscle MTU]]
 //   wang2012_walk --resume DIR [--threads N]
@@ -21,14 +22,16 @@
 // K rollouts pushed on the torso for 0.4 s every 3 s (synthesis/robust_variants.hpp), the push-
 // robust walker of Sec. 6.4, --push-force newtons along each of Table 1's eight directions (the
 // diagonals too: Sec. 6.4's "100 N pushes"); each later push of a rollout turns K directions on,
-// so K = 3 pushes all eight. --check-pushes N adds Table 1's 40 s push protocol to the check
-// (rollout/push_test.hpp: a 0.4 s push to the torso every 4 s, N newtons along each of the eight
-// directions, one walk each; the summary's pushes_survived). --effort picks J_M: the metabolic
-// energy, or the ablations min_torque (w_M = 5) and min_act (w_M = 60000) of Sec. 6.2. --weaken
-// GAS=0.25 scales both GAS units' F_max (the weakened muscles of Sec. 6.2). A saved controller
-// records its effort, weights and weakness, and a replay uses them unless told otherwise. --gait
-// run starts from Sec. 6.3's running controller instead of the walking one; --iterations 0 checks
-// the initial controller without optimizing it.
+// so K = 3 pushes all eight (--push-direction-step D turns D instead: 0 with K = 8 pushes each
+// rollout along its own direction every --push-period seconds, as Table 1's protocol does).
+// --check-pushes N adds Table 1's 40 s push protocol to the check (rollout/push_test.hpp: a 0.4 s
+// push to the torso every 4 s, N newtons along each of the eight directions, one walk each; the
+// summary's pushes_survived). --effort picks J_M: the metabolic energy, or the ablations min_torque
+// (w_M = 5) and min_act (w_M = 60000) of Sec. 6.2. --weaken GAS=0.25 scales both GAS units' F_max
+// (the weakened muscles of Sec. 6.2). A saved controller records its effort, weights and weakness,
+// and a replay uses them unless told otherwise. --gait run starts from Sec. 6.3's running
+// controller instead of the walking one; --iterations 0 checks the initial controller without
+// optimizing it.
 //
 // Every form takes the viewer flags (--html FILE, --filmstrip FILE, --csv FILE, ...) for the
 // check rollout. Writes DIR/wang2012_walk.controller.json, .convergence.csv, .checkpoint, .csv
@@ -81,8 +84,10 @@ struct cli {
   std::string effort;  // metabolic (Sec. 5.1), torque or activation (Sec. 6.2); "": saved/metabolic
   std::map<std::string, double> weaken;  // --weaken MTU=F (Sec. 6.2): F_max x F, both legs
   int robust_pushes = 0;
-  double push_force = 100.0;  // N (Sec. 6.4)
-  double check_pushes = 0.0;  // N: the check's 40 s push protocol (0: none)
+  double push_force = 100.0;     // N (Sec. 6.4)
+  int push_direction_step = -1;  // -1: robust_pushes (robust_variant_options::push_direction_step)
+  double push_period = 3.0;      // s between the training pushes' starts
+  double check_pushes = 0.0;     // N: the check's 40 s push protocol (0: none)
   double check_seconds = 20.0;
   double horizon = 10.0;  // s, "not falling down for 10 seconds"
   double sigma = 0.005;   // Sec. 5
@@ -139,6 +144,15 @@ cli parse(int argc, char** argv) {
       ->check(example_cli::integer_in(0, 1000));
   app.add_option("--push-force", c.push_force, "force of those pushes, N (Sec. 6.4: 100)")
       ->check(example_cli::in_range(0.0, 100000.0));
+  app.add_option("--push-direction-step", c.push_direction_step,
+                 "directions each later push of a pushed rollout turns on (-1: K, so K = 3 "
+                 "rollouts push all eight; 0: each rollout pushes its own direction every time, "
+                 "as Table 1's protocol does)")
+      ->check(example_cli::integer_in(-1, 7));
+  app.add_option("--push-period", c.push_period,
+                 "s between the starts of a pushed rollout's pushes (the first at 2 s; Table 1's "
+                 "protocol: 4)")
+      ->check(example_cli::in_range(0.5, 1000.0));
   app.add_option("--check-pushes", c.check_pushes,
                  "also check Table 1's 40 s push protocol (a 0.4 s push to the torso every 4 s) "
                  "with this force, N, along each of its 8 directions (0: not checked)")
@@ -272,14 +286,17 @@ int run_with(const cli& c, const floating_model& m, const std::vector<musculoten
       optimize(prob);
     } else {
       // Seeded apart from the check's starts (2012 below), so the check judges unseen starts.
-      auto variants = robust_variants(prob, {.starts = c.robust_starts,
-                                             .start_sigma = c.start_sigma,
-                                             .seed = 1000 + c.seed,
-                                             .pushes = c.robust_pushes,
-                                             .push_force = c.push_force,
-                                             .horizon = c.horizon,
-                                             .push_direction_step = c.robust_pushes,
-                                             .push_force_magnitude = true});
+      auto variants = robust_variants(
+          prob, {.starts = c.robust_starts,
+                 .start_sigma = c.start_sigma,
+                 .seed = 1000 + c.seed,
+                 .pushes = c.robust_pushes,
+                 .push_force = c.push_force,
+                 .push_period = c.push_period,
+                 .horizon = c.horizon,
+                 .push_direction_step =
+                     c.push_direction_step < 0 ? c.robust_pushes : c.push_direction_step,
+                 .push_force_magnitude = true});
       optimize(make_problem_with_variants(prob, std::move(variants)));
     }
   }

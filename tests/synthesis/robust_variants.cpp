@@ -79,6 +79,19 @@ TEST_CASE("robust_variants: seeded starts, then pushes on the documented schedul
     }
   }
   CHECK(seen.size() == 8);
+  // push_direction_step = 0, K = 8: each variant pushes its own direction every push_period, as
+  // Table 1's protocol repeats one direction (14 s, 4 s apart: at 2, 6, 10 s).
+  const auto own = robust_variants(
+      prob, {.pushes = 8, .push_period = 4.0, .horizon = 14.0, .push_direction_step = 0});
+  REQUIRE(own.size() == 8);
+  for (int k = 0; k < 8; ++k) {
+    REQUIRE(own[k].options.pushes.size() == 4);
+    for (int i = 0; i < 3; ++i) {
+      const push& p = own[k].options.pushes[1 + i];
+      CHECK(p.start == Approx(2.0 + 4.0 * i));
+      CHECK((p.force - 100.0 * table1_directions()[k]).norm() == 0.0);
+    }
+  }
   // push_force_magnitude: 100 N along the diagonals too, not 100 N per component.
   const auto unit = robust_variants(prob, {.pushes = 2, .push_force_magnitude = true});
   REQUIRE(unit.size() == 2);
