@@ -28,6 +28,8 @@
 #include "gaitsynth/rollout/rollout.hpp"
 #include "gaitsynth/rollout/walk_check.hpp"
 
+#include "wu2010_saved_rollout.hpp"
+
 using namespace gaitsynth;
 
 int main(int argc, char** argv) try {
@@ -41,18 +43,7 @@ int main(int argc, char** argv) try {
   po.helper_force = false;
   const planned_walk<> c(m, flat_terrain{}, po);
   const std::vector<double> x = planned_walk_values(saved, c.parameter_names(), file);
-  rollout_options o;
-  if (saved.info.contains("leg_collisions") && saved.info["leg_collisions"].is_boolean() &&
-      saved.info["leg_collisions"].get<bool>())
-    o.self_contact = wu2010_leg_collisions(m);
-  // The saved controller's integration (wu2010_walk --implicit-damping; none recorded: explicit).
-  o.implicit_joint_damping = saved.info.contains("implicit_damping") &&
-                             saved.info["implicit_damping"].is_boolean() &&
-                             saved.info["implicit_damping"].get<bool>();
-  o = walk_options(o);
-  o.duration = seconds;
-  o.initial_state = make_state(m);
-  place_on_terrain(m, flat_terrain{}, o.initial_state.q);
+  rollout_options o = walk_options(gaitsynth_scripts::saved_rollout_options(m, saved, seconds));
   trajectory tr;
   o.record = &tr;
   o.record_every = 1;

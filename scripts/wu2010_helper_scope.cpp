@@ -26,6 +26,8 @@
 #include "gaitsynth/objectives/distance.hpp"
 #include "gaitsynth/rollout/rollout.hpp"
 
+#include "wu2010_saved_rollout.hpp"
+
 using namespace gaitsynth;
 
 int main(int argc, char** argv) try {
@@ -38,17 +40,7 @@ int main(int argc, char** argv) try {
   const planned_walk_saved saved = load_planned_walk(file);
   planned_walk_options po = saved_planned_walk_options(saved, file);
   po.helper_force = true;
-  rollout_options o;
-  if (saved.info.contains("leg_collisions") && saved.info["leg_collisions"].is_boolean() &&
-      saved.info["leg_collisions"].get<bool>())
-    o.self_contact = wu2010_leg_collisions(m);
-  // The saved controller's integration (wu2010_walk --implicit-damping; none recorded: explicit).
-  o.implicit_joint_damping = saved.info.contains("implicit_damping") &&
-                             saved.info["implicit_damping"].is_boolean() &&
-                             saved.info["implicit_damping"].get<bool>();
-  o.duration = seconds;
-  o.initial_state = make_state(m);
-  place_on_terrain(m, flat_terrain{}, o.initial_state.q);
+  rollout_options o = gaitsynth_scripts::saved_rollout_options(m, saved, seconds);
   auto scratch = make_rollout_scratch(m);
   std::vector<double> bounds;
   for (int i = 3; i < argc; ++i) bounds.push_back(std::atof(argv[i]));
