@@ -4,7 +4,9 @@
 // physics step recorded, and prints the COM every 0.25 s, then for the last 30 steps the COM, the
 // fastest joint (rad/s), the sole contact points touching and the three angles (x y z, rad) of the
 // ankle on the fastest joint's side (a blow-up at the ankle's Euler gimbal lock, ankle_y -> pi/2,
-// docs/reproductions/wu2010.md, "Where eq. 5 falls short"). Compile against the tree's include/:
+// docs/reproductions/wu2010.md, "Where eq. 5 falls short"). Two knobs rule out other causes:
+// NULL_SPACE_OFF=1 in the environment switches the lower level's null-space spring-damper off,
+// FOOT_INERTIA=k multiplies both feet's inertia by k. Compile against the tree's include/:
 //
 //   g++ -std=c++20 -O2 -DNDEBUG -Iinclude -isystem /usr/include/eigen3
 //       scripts/wu2010_divergence.cpp -o /tmp/wu2010_divergence
@@ -37,10 +39,14 @@ int main(int argc, char** argv) try {
   const char* file = argv[1];
   const double seconds = std::atof(argv[2]);
   if (!(seconds > 0.0)) throw std::invalid_argument("SECONDS must be > 0");
-  const floating_model m = wu2010_biped();
+  floating_model m = wu2010_biped();
+  if (const char* k = std::getenv("FOOT_INERTIA"))
+    for (body& b : m.bodies)
+      if (b.name == "lfoot" || b.name == "rfoot") b.inertia *= std::atof(k);
   const planned_walk_saved saved = load_planned_walk(file);
   planned_walk_options po = saved_planned_walk_options(saved, file);
   po.helper_force = false;
+  if (std::getenv("NULL_SPACE_OFF")) po.lower.null_space_kp = po.lower.null_space_kd = 0.0;
   const planned_walk<> c(m, flat_terrain{}, po);
   const std::vector<double> x = planned_walk_values(saved, c.parameter_names(), file);
   rollout_options o = walk_options(gaitsynth_scripts::saved_rollout_options(m, saved, seconds));
