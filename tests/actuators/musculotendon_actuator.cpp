@@ -4,6 +4,7 @@
 // bit for bit and refuses bad input with messages that name it.
 #include <catch2/catch.hpp>
 
+#include <array>
 #include <cmath>
 #include <map>
 #include <string>
@@ -17,11 +18,13 @@
 #include "gaitsynth/models/wang2012.hpp"
 #include "gaitsynth/objectives/distance.hpp"
 #include "gaitsynth/rollout/rollout.hpp"
+#include "support/same_bits.hpp"
 
 using namespace gaitsynth;
 using Catch::Matchers::Contains;
 using Catch::Matchers::WithinAbs;
 using Catch::Matchers::WithinRel;
+using gaitsynth_test::same_bits_unless_fused;
 
 static_assert(actuator<musculotendon_actuator, floating_root>);
 static_assert(actuator_with_advance<musculotendon_actuator, floating_root>);
@@ -87,6 +90,69 @@ TEST_CASE("each crossing's torque is the virtual work of its length change, over
         CHECK_THAT(x.torque(q, 1.0), WithinAbs(-dldq / x.length_factor, 1e-8));
       }
     }
+}
+
+TEST_CASE(
+    "length_and_arms gives unit::length and each crossing's arm to the bit, and the sum "
+    "of the crossings' length changes",
+    "[actuators][musculotendon]") {
+  const auto m = wang2012_humanoid();
+  Eigen::VectorXd qj = Eigen::VectorXd::Constant(m.num_joint_dofs(), 0.0);
+  for (const auto& u : musculotendon::geyer_herr_leg_muscles(m)) {
+    const std::array<double, 2> sines = u.reference_sines();
+    CHECK(sines[0] == u.crossings[0].reference_sine());
+    for (double q : {-0.7, -0.1, 0.0, 0.4, 1.1}) {
+      qj.setConstant(q);
+      std::array<double, 2> arms{};
+      INFO(u.name << " at q = " << q);
+      CHECK(same_bits_unless_fused(u.length_and_arms(qj, sines, arms), u.length(qj)));
+      double l = u.parameters.optimal_fiber_length + u.parameters.tendon_slack_length;
+      for (int c = 0; c < u.num_crossings; ++c) l += u.crossings[c].length_change(q);
+      CHECK_THAT(l, WithinAbs(u.length(qj), 1e-15));  // the definition, up to a contracted FMA
+      for (int c = 0; c < u.num_crossings; ++c)
+        CHECK(same_bits_unless_fused(arms[static_cast<std::size_t>(c)], u.crossings[c].arm(q)));
+    }
+  }
+}
+
+TEST_CASE(
+    "torques at the configuration of the last advance reuse its force and arms to the bit; "
+    "elsewhere they are recomputed",
+    "[actuators][musculotendon]") {
+  const auto m = wang2012_humanoid();
+  const musculotendon_actuator act(musculotendon::geyer_herr_leg_muscles(m), 0.3);
+  const int nj = m.num_joint_dofs(), M = act.num_units();
+  auto st = act.make_state(m);
+  sim_state s = make_state(m);
+  s.q.tail(nj).setConstant(0.1);
+  act.start(m, s, st);
+  Eigen::VectorXd cmd = Eigen::VectorXd::Zero(act.command_size(m));
+  cmd.head(M).setConstant(0.6);
+  // What the MTUs' torques are at q with the state's fibers, from the path alone.
+  auto muscle_torques = [&](const Eigen::VectorXd& q) {
+    Eigen::VectorXd tau = Eigen::VectorXd::Zero(nj);
+    for (int i = 0; i < M; ++i) {
+      const auto& u = act.units()[static_cast<std::size_t>(i)];
+      const double f =
+          musculotendon::forces_at(u.parameters, u.length(q), st.fiber_length[i]).tendon;
+      u.add_torques(q, f, tau);
+    }
+    return tau;
+  };
+  Eigen::VectorXd tau(nj);
+  for (int k = 0; k < 5; ++k) {  // the rollout's order: advance at the new pose, then torques
+    s.q.tail(nj).array() += 0.01 * (k + 1);
+    act.advance(m, s, cmd, st, dt);
+    act.torques(m, s, cmd, st, tau);  // the mixed block is zero: muscles only
+    const Eigen::VectorXd expected = muscle_torques(s.q.tail(nj));
+    for (int j = 0; j < nj; ++j) CHECK(same_bits_unless_fused(tau[j], expected[j]));
+    CHECK(tau.cwiseAbs().maxCoeff() > 1.0);
+  }
+  s.q.tail(nj).array() += 0.05;  // a pose the state was not advanced at
+  act.torques(m, s, cmd, st, tau);
+  const Eigen::VectorXd moved = muscle_torques(s.q.tail(nj));
+  for (int j = 0; j < nj; ++j) CHECK(same_bits_unless_fused(tau[j], moved[j]));
+  CHECK((st.joint_angles.array() != s.q.tail(nj).array()).any());
 }
 
 TEST_CASE("at the standing pose every fiber starts in isometric equilibrium, on its working range",

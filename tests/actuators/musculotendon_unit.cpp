@@ -34,6 +34,22 @@ TEST_CASE("force-length: 1 at l_opt, 0.05 at l_opt (1 +- w), 0.05^(1/8) half-way
   CHECK_THAT(force_length(0.72), WithinRel(std::pow(0.05, 0.125), 1e-12));
 }
 
+TEST_CASE("force_length_with_slope: f_L to the bit with one exp, and its slope by differences",
+          "[actuators][musculotendon]") {
+  for (double l : {0.3, 0.44, 0.72, 0.99, 1.0, 1.01, 1.28, 1.56, 1.9}) {
+    INFO("l " << l);
+    const force_length_and_slope f = force_length_with_slope(l);
+    CHECK(f.value == force_length(l));
+    CHECK(f.slope == force_length_slope(l));
+    const double e = 1e-7;
+    const double fd = (force_length(l + e) - force_length(l - e)) / (2.0 * e);
+    CHECK_THAT(f.slope, WithinAbs(fd, 1e-7 * (1.0 + std::abs(fd))));
+  }
+  CHECK(force_length_with_slope(1.0).slope == 0.0);  // the curve's top
+  CHECK(force_length_with_slope(1.28).slope < 0.0);
+  CHECK(force_length_with_slope(0.72).slope > 0.0);
+}
+
 TEST_CASE("force-velocity: Hill's hyperbola when shortening, the eccentric branch when lengthening",
           "[actuators][musculotendon]") {
   const double V = 6.0;  // l_opt / s

@@ -24,6 +24,7 @@
 /// Sensed values (sense(), the reflexes' inputs): F_MTU / F_max for each MTU, then l_CE / l_opt.
 #include <Eigen/Core>
 #include <algorithm>
+#include <array>
 #include <limits>
 #include <span>
 #include <string>
@@ -47,6 +48,9 @@ struct musculotendon_state {
   Eigen::VectorXd force;           ///< F_MTU = F_SE, N
   Eigen::VectorXd active_force;    ///< F_CE (the equilibrium's CE share), N
   Eigen::VectorXd fiber_velocity;  ///< v_CE of the last step, m/s (+ lengthening)
+  Eigen::VectorXd moment_arm;      ///< r(phi) of each MTU's crossings at the last advance/start
+                                   ///< (2 per MTU), m
+  Eigen::VectorXd joint_angles;    ///< the joint DOFs at the last advance/start (NaN before)
 };
 
 class musculotendon_actuator {
@@ -58,6 +62,7 @@ class musculotendon_actuator {
   explicit musculotendon_actuator(std::vector<musculotendon::unit> units,
                                   double initial_activation = musculotendon::minimum_activation)
       : units_(std::move(units)), initial_activation_(initial_activation) {
+    reference_sines_.reserve(units_.size());
     check_argument(initial_activation >= 0.0 && initial_activation <= 1.0,
                    "musculotendon_actuator: initial_activation must be in [0, 1], got ",
                    initial_activation);
@@ -71,6 +76,7 @@ class musculotendon_actuator {
                      p.tendon_slack_length, ", ", p.max_shortening_velocity);
       check_argument(u.num_crossings == 1 || u.num_crossings == 2, "musculotendon_actuator: MTU '",
                      u.name, "' spans 1 or 2 DOFs, got ", u.num_crossings);
+      reference_sines_.push_back(u.reference_sines());
     }
   }
 
@@ -87,8 +93,9 @@ class musculotendon_actuator {
                        "musculotendon_actuator: MTU '", u.name, "' spans DOF ", u.crossings[c].dof,
                        ", the model has ", nj, " joint DOFs");
     const Eigen::Index n = num_units();
-    state_type st{Eigen::VectorXd(n), Eigen::VectorXd(n), Eigen::VectorXd(n), Eigen::VectorXd(n),
-                  Eigen::VectorXd(n), Eigen::VectorXd(n), Eigen::VectorXd(n)};
+    state_type st{Eigen::VectorXd(n), Eigen::VectorXd(n),     Eigen::VectorXd(n),
+                  Eigen::VectorXd(n), Eigen::VectorXd(n),     Eigen::VectorXd(n),
+                  Eigen::VectorXd(n), Eigen::VectorXd(2 * n), Eigen::VectorXd(nj)};
     reset_state(m, st);
     return st;
   }
@@ -102,6 +109,8 @@ class musculotendon_actuator {
     st.force.setZero();
     st.active_force.setZero();
     st.fiber_velocity.setZero();
+    st.moment_arm.setZero();
+    st.joint_angles.setConstant(std::numeric_limits<double>::quiet_NaN());
   }
 
   /// Every fiber in isometric equilibrium at s's pose and the current activation. Throws
@@ -113,13 +122,14 @@ class musculotendon_actuator {
     for (int i = 0; i < num_units(); ++i) {
       const auto& u = units_[static_cast<std::size_t>(i)];
       const auto& p = u.parameters;
-      const double l_mtu = u.length(qj);
+      const double l_mtu = path(i, qj, st);
       check_argument(l_mtu > musculotendon::hill_constants::buffer_length * p.optimal_fiber_length,
                      "musculotendon_actuator: MTU '", u.name, "' is ", l_mtu,
                      " m long at the start pose, shorter than its fiber can be");
       st.fiber_length[i] = musculotendon::isometric_fiber_length(p, st.activation[i], l_mtu);
       store(i, p, l_mtu, 0.0, st);
     }
+    st.joint_angles = qj;
   }
 
   template <root_joint Root>
@@ -140,11 +150,25 @@ class musculotendon_actuator {
       tau[j] = clamp_torque(t, m.dofs[j].torque_limit);
     }
     const auto qj = s.q.tail(nj);
+    // At the configuration of the last advance (the rollout's case: advance, then the next step's
+    // torques) the stored force and arms are these torques' to the bit; elsewhere, recomputed.
+    if ((st.joint_angles.array() == qj.array()).all()) {
+      for (int i = 0; i < M; ++i) {
+        const auto& u = units_[static_cast<std::size_t>(i)];
+        for (int c = 0; c < u.num_crossings; ++c)
+          tau[u.crossings[c].dof] +=
+              u.crossings[c].torque_with_arm(st.moment_arm[2 * i + c], st.force[i]);
+      }
+      return;
+    }
     for (int i = 0; i < M; ++i) {
-      const auto& u = units_[static_cast<std::size_t>(i)];
-      const double force =
-          musculotendon::forces_at(u.parameters, u.length(qj), st.fiber_length[i]).tendon;
-      u.add_torques(qj, force, tau);
+      const auto k = static_cast<std::size_t>(i);
+      const auto& u = units_[k];
+      std::array<double, 2> arms{};
+      const double l_mtu = u.length_and_arms(qj, reference_sines_[k], arms);
+      const double force = musculotendon::forces_at(u.parameters, l_mtu, st.fiber_length[i]).tendon;
+      for (int c = 0; c < u.num_crossings; ++c)
+        tau[u.crossings[c].dof] += u.crossings[c].torque_with_arm(arms[c], force);
     }
   }
 
@@ -169,12 +193,13 @@ class musculotendon_actuator {
       const auto& p = u.parameters;
       st.excitation[i] = std::clamp(cmd[i], 0.0, 1.0);
       st.activation[i] = musculotendon::advance_activation(st.activation[i], cmd[i], h);
-      const double l_mtu = u.length(qj);
+      const double l_mtu = path(i, qj, st);
       const double l_old = st.fiber_length[i];
       st.fiber_length[i] =
           musculotendon::advance_fiber(p, st.activation[i], l_mtu, l_old, h, st.fiber_velocity[i]);
       store(i, p, l_mtu, (st.fiber_length[i] - l_old) / h, st);
     }
+    st.joint_angles = qj;
   }
 
   template <root_joint Root>
@@ -193,6 +218,17 @@ class musculotendon_actuator {
   }
 
  private:
+  /// l_MTU of MTU i at joint angles qj, with its crossings' arms written to st.moment_arm.
+  template <class Joints>
+  double path(int i, const Joints& qj, state_type& st) const {
+    const auto k = static_cast<std::size_t>(i);
+    std::array<double, 2> arms{};
+    const double l = units_[k].length_and_arms(qj, reference_sines_[k], arms);
+    st.moment_arm[2 * i] = arms[0];
+    st.moment_arm[2 * i + 1] = arms[1];
+    return l;
+  }
+
   static void store(int i, const musculotendon::unit_parameters& p, double l_mtu, double v,
                     state_type& st) {
     const auto f = musculotendon::forces_at(p, l_mtu, st.fiber_length[i]);
@@ -203,6 +239,8 @@ class musculotendon_actuator {
   }
 
   std::vector<musculotendon::unit> units_;
+  std::vector<std::array<double, 2>>
+      reference_sines_;  ///< per MTU: its crossings' reference_sine()
   double initial_activation_;
 };
 

@@ -49,6 +49,12 @@ inline world_angles body_world_angles(const mat3& R, double heading = 0.0) {
   return {std::atan2(-up.y(), up.z()), std::atan2(up.x(), up.z()), std::atan2(fwd.y(), fwd.x())};
 }
 
+/// body_world_angles(R, heading).coronal alone (one atan2 instead of three).
+inline double body_coronal_angle(const mat3& R, double heading = 0.0) {
+  const vec3 up = to_heading_frame(R.col(2), heading);
+  return std::atan2(-up.y(), up.z());
+}
+
 /// The angle between a body's unit up vector (world; R.col(2)) and the world vertical, rad, in
 /// [0, pi]: its tilt, whichever way it leans.
 inline double tilt_from_vertical(const vec3& up) {

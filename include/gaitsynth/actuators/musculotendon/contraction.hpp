@@ -79,14 +79,15 @@ inline velocity_and_slope equilibrium_velocity_and_slope(const unit_parameters& 
   // What the CE must carry (F_SE - F_PE + F_BE) and what it can at this length and activation.
   const double demand = F * (tendon_force(e) - parallel_force(l) + buffer_force(l));
   const double a_ce = std::max(a, minimum_activation);
-  const double strength = a_ce * force_length(l);
+  const force_length_and_slope fl = force_length_with_slope(l);
+  const double strength = a_ce * fl.value;
   const double capacity = F * std::max(strength, 1e-6);
   const double ratio = demand / capacity;
   if (!(ratio > 0.0)) return {lo * fiber_velocity(0.0, V), 0.0};
   if (ratio >= max_velocity_ratio) return {lo * fiber_velocity(max_velocity_ratio, V), 0.0};
   const double d_demand =
       F * (-tendon_stiffness(e) / ls + (buffer_force_slope(l) - parallel_force_slope(l)) / lo);
-  const double d_capacity = strength > 1e-6 ? F * a_ce * force_length_slope(l) / lo : 0.0;
+  const double d_capacity = strength > 1e-6 ? F * a_ce * fl.slope / lo : 0.0;
   const double d_ratio = (d_demand * capacity - demand * d_capacity) / (capacity * capacity);
   return {lo * fiber_velocity(ratio, V), lo * fiber_velocity_slope(ratio, V) * d_ratio};
 }

@@ -14,6 +14,7 @@
 ///   parallel_force(l)      f_PE = ((l - 1) / w)^2 for l > 1, else 0
 ///   buffer_force(l)        f_BE = ((l_min - l) / (w / 2))^2 for l < l_min = 1 - w, else 0
 ///   *_slope, tendon_stiffness   their derivatives (the fiber step's Newton iteration)
+///   force_length_with_slope     f_L and its slope from one exp
 ///
 /// with w = 0.56, c = ln 0.05, N = 1.5, K = 5, e_ref = 0.04 (Geyer & Herr 2010, Table I's shared
 /// values), and V = v_max in l_opt / s (6 for SOL, 12 for the others). The parallel element
@@ -41,11 +42,22 @@ inline double force_length(double l) noexcept {
   return std::exp(std::log(hill_constants::residual_force) * x * x * x);
 }
 
+/// f_L and d f_L / d l together, with one exp (the fiber step's Newton iteration needs both).
+struct force_length_and_slope {
+  double value = 0.0;
+  double slope = 0.0;
+};
+
+inline force_length_and_slope force_length_with_slope(double l) noexcept {
+  const double f = force_length(l);
+  const double x = (l - 1.0) / hill_constants::width;
+  return {f, f * std::log(hill_constants::residual_force) * 3.0 * x * std::abs(x) /
+                 hill_constants::width};
+}
+
 /// d f_L / d l.
 inline double force_length_slope(double l) noexcept {
-  const double x = (l - 1.0) / hill_constants::width;
-  return force_length(l) * std::log(hill_constants::residual_force) * 3.0 * x * std::abs(x) /
-         hill_constants::width;
+  return force_length_with_slope(l).slope;
 }
 
 /// f_V(v): active force at normalized fiber velocity v (l_opt / s, + lengthening) for a muscle

@@ -34,19 +34,31 @@ struct joint_crossing {
   bool constant_arm() const { return std::isnan(angle_of_max_arm); }
   double angle(double q) const { return angle_offset + angle_scale * q; }
 
+  /// sin(phi_ref - phi_max), the constant of a variable arm's length (0 for a constant arm): an
+  /// actuator computes it once (crossing_geometry) instead of every step.
+  double reference_sine() const {
+    return constant_arm() ? 0.0 : std::sin(reference_angle - angle_of_max_arm);
+  }
+
   /// r(phi) at DOF angle q (m).
   double arm(double q) const {
     return constant_arm() ? moment_arm : moment_arm * std::cos(angle(q) - angle_of_max_arm);
   }
   /// This crossing's share of the MTU length at DOF angle q (m; 0 at phi_ref).
-  double length_change(double q) const {
+  double length_change(double q) const { return length_change(q, reference_sine()); }
+  /// The same with reference_sine() given.
+  double length_change(double q, double reference_sine) const {
     const double phi = angle(q);
     if (constant_arm()) return -action * length_factor * moment_arm * (phi - reference_angle);
     return -action * length_factor * moment_arm *
-           (std::sin(phi - angle_of_max_arm) - std::sin(reference_angle - angle_of_max_arm));
+           (std::sin(phi - angle_of_max_arm) - reference_sine);
   }
   /// The torque on DOF q of MTU force F (N m, in the model's sign of q).
-  double torque(double q, double force) const { return action * angle_scale * arm(q) * force; }
+  double torque(double q, double force) const { return torque_with_arm(arm(q), force); }
+  /// The same with the arm r(phi) given.
+  double torque_with_arm(double arm, double force) const {
+    return action * angle_scale * arm * force;
+  }
 };
 
 }  // namespace gaitsynth::musculotendon

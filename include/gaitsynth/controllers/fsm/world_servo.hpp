@@ -42,9 +42,17 @@ struct world_servo_gains {
 template <root_joint Root>
 vec3 world_servo_torque(const sensors<Root>& s, int b, const world_servo_gains& g,
                         double heading = 0.0) {
-  const world_angles th = body_world_angles(s.body_rotation[b], heading);
   const vec3 w = to_heading_frame(s.body_angular_velocity[b], heading);
   vec3 t;
+  if (g.kp[1] == 0.0 && g.kp[2] == 0.0) {
+    // A coronal servo (Wang et al. 2012 Sec. 4.4 has five per tick): kp (target - angle) is 0 on
+    // the free axes whatever the angle, so only the coronal angle's atan2 is computed.
+    t[0] =
+        g.kp[0] * (g.target[0] - body_coronal_angle(s.body_rotation[b], heading)) - g.kd[0] * w[0];
+    for (int a = 1; a < 3; ++a) t[a] = g.kp[a] * g.target[a] - g.kd[a] * w[a];
+    return to_heading_frame(t, -heading);
+  }
+  const world_angles th = body_world_angles(s.body_rotation[b], heading);
   for (int a = 0; a < 3; ++a) t[a] = g.kp[a] * (g.target[a] - th[a]) - g.kd[a] * w[a];
   return to_heading_frame(t, -heading);
 }
