@@ -10,7 +10,7 @@
 //                 [--init FILE] [--horizon S] [--sigma S] [--population N] [--check-seconds S]
 //                 [--robust-starts K] [--start-sigma S] [--weight TERM=W]...
 //                 [--robust-pushes K] [--push-force N] [--check-pushes N]
-//                 [--push-direction-step D] [--push-period S]
+//                 [--push-direction-step D] [--push-period S] [--push-phase fixed|random]
 //                 [--effort metabolic|torque|activation]
 //                 [--weaken MTU=F]... [--gait walk|run] [--muscle-svg FILE [--muscle MTU]]
 //   wang2012_walk --resume DIR [--threads N]
@@ -24,6 +24,11 @@
 // diagonals too: Sec. 6.4's "100 N pushes"); each later push of a rollout turns K directions on,
 // so K = 3 pushes all eight (--push-direction-step D turns D instead: 0 with K = 8 pushes each
 // rollout along its own direction every --push-period seconds, as Table 1's protocol does).
+// Those pushes start at 2 s; --push-phase random moves each pushed rollout's pushes by its own
+// phase in [0, push period), drawn anew every iteration (seed * 1000003 + iteration, so a resume
+// continues alike): a walker cannot learn where in its gait the pushes land. With it the best
+// single candidate is partly luck, so the run also saves CMA's mean (.mean.json, every 10
+// iterations) as wu2010_walk does on its random terrain.
 // --check-pushes N adds Table 1's 40 s push protocol to the check (rollout/push_test.hpp: a 0.4 s
 // push to the torso every 4 s, N newtons along each of the eight directions, one walk each; the
 // summary's pushes_survived). --effort picks J_M: the metabolic energy, or the ablations min_torque
@@ -40,6 +45,7 @@
 #include <cmath>
 #include <filesystem>
 #include <iostream>
+#include <limits>
 #include <map>
 #include <nlohmann/json.hpp>
 #include <sstream>
@@ -87,7 +93,8 @@ struct cli {
   double push_force = 100.0;     // N (Sec. 6.4)
   int push_direction_step = -1;  // -1: robust_pushes (robust_variant_options::push_direction_step)
   double push_period = 3.0;      // s between the training pushes' starts
-  double check_pushes = 0.0;     // N: the check's 40 s push protocol (0: none)
+  std::string push_phase = "fixed";  // fixed: first push at 2 s; random: redrawn per iteration
+  double check_pushes = 0.0;         // N: the check's 40 s push protocol (0: none)
   double check_seconds = 20.0;
   double horizon = 10.0;  // s, "not falling down for 10 seconds"
   double sigma = 0.005;   // Sec. 5
@@ -153,6 +160,10 @@ cli parse(int argc, char** argv) {
                  "s between the starts of a pushed rollout's pushes (the first at 2 s; Table 1's "
                  "protocol: 4)")
       ->check(example_cli::in_range(0.5, 1000.0));
+  app.add_option("--push-phase", c.push_phase,
+                 "fixed: a pushed rollout's pushes start at 2 s; random: each pushed rollout's "
+                 "pushes move by its own phase in [0, push period), drawn anew every iteration")
+      ->check(CLI::IsMember({"fixed", "random"}));
   app.add_option("--check-pushes", c.check_pushes,
                  "also check Table 1's 40 s push protocol (a 0.4 s push to the torso every 4 s) "
                  "with this force, N, along each of its 8 directions (0: not checked)")
@@ -242,7 +253,7 @@ int run_with(const cli& c, const floating_model& m, const std::vector<musculoten
   Eigen::VectorXd best = Eigen::Map<const Eigen::VectorXd>(x0.data(), std::ssize(x0));
   double best_cost = prob.cost(best, c.horizon);
   optimization_result res;
-  auto save = [&](const Eigen::VectorXd& x, double cost) {
+  auto save = [&](const Eigen::VectorXd& x, double cost, const char* suffix = ".controller.json") {
     wang2012_saved_controller s;
     s.target_speed = speed;
     s.cost = cost;
@@ -251,10 +262,12 @@ int run_with(const cli& c, const floating_model& m, const std::vector<musculoten
     s.info["weights"] = c.weights;
     s.info["effort"] = c.effort;
     if (!c.weaken.empty()) s.info["weaken"] = c.weaken;
-    save_wang2012_controller(stem + ".controller.json", s);
+    save_wang2012_controller(stem + suffix, s);
   };
   // CMA-ES on `problem`'s cost at the horizon (the paper's problem, or one with robust variants).
-  auto optimize = [&](const auto& problem) {
+  // before_iteration(i) runs before iteration i + 1 (from 0; after a resume, first with the
+  // checkpoint's count): where --push-phase random redraws the pushes.
+  auto optimize = [&](const auto& problem, auto&& before_iteration, bool save_mean) {
     thread_pool_evaluator pool(c.threads);
     problem_contexts ctx(problem, pool.thread_count());
     problem_cost cost(problem, c.horizon, ctx);
@@ -272,32 +285,61 @@ int run_with(const cli& c, const floating_model& m, const std::vector<musculoten
     ro.checkpoint_file = stem + ".checkpoint";
     ro.checkpoint_every = 10;
     ro.resume = c.resume;
+    std::int64_t done = 0;
+    if (c.resume && fs::exists(ro.checkpoint_file)) {
+      load_checkpoint(cma, ro.checkpoint_file);  // (minimize loads it again) its iteration count
+      done = cma.status().iteration;
+    }
+    before_iteration(done);
+    // The distribution's mean, clipped to the bounds (its cost is not evaluated: null).
+    const parameter_space space = wang2012_search_space(x0);
+    auto mean = [&] {
+      Eigen::VectorXd mu = cma.mean_user();
+      const std::vector<parameter_spec>& specs = space.parameters();
+      for (std::size_t i = 0; i < specs.size(); ++i) {
+        const auto k = static_cast<Eigen::Index>(i);
+        mu[k] = std::clamp(mu[k], specs[i].lower, specs[i].upper);
+      }
+      return mu;
+    };
     auto keep_best = [&](const optimizer_status& st) {
       if (st.iteration % 10 == 0 && std::isfinite(cma.best_value()))
         save(cma.best_x(), cma.best_value());
+      if (save_mean && st.iteration % 10 == 0)
+        save(mean(), std::numeric_limits<double>::quiet_NaN(), ".mean.json");
+      before_iteration(st.iteration);
     };
     res = minimize(cma, cost, pool, ro, keep_best);
     best = res.x;
     best_cost = res.value;
     save(best, best_cost);
+    if (save_mean) save(mean(), std::numeric_limits<double>::quiet_NaN(), ".mean.json");
   };
   if (c.replay.empty() && c.iterations > 0) {
     if (c.robust_starts == 0 && c.robust_pushes == 0) {
-      optimize(prob);
+      optimize(
+          prob, [](std::int64_t) {}, false);
     } else {
       // Seeded apart from the check's starts (2012 below), so the check judges unseen starts.
-      auto variants = robust_variants(
-          prob, {.starts = c.robust_starts,
-                 .start_sigma = c.start_sigma,
-                 .seed = 1000 + c.seed,
-                 .pushes = c.robust_pushes,
-                 .push_force = c.push_force,
-                 .push_period = c.push_period,
-                 .horizon = c.horizon,
-                 .push_direction_step =
-                     c.push_direction_step < 0 ? c.robust_pushes : c.push_direction_step,
-                 .push_force_magnitude = true});
-      optimize(make_problem_with_variants(prob, std::move(variants)));
+      const robust_variant_options vo{.starts = c.robust_starts,
+                                      .start_sigma = c.start_sigma,
+                                      .seed = 1000 + c.seed,
+                                      .pushes = c.robust_pushes,
+                                      .push_force = c.push_force,
+                                      .push_period = c.push_period,
+                                      .horizon = c.horizon,
+                                      .push_direction_step = c.push_direction_step < 0
+                                                                 ? c.robust_pushes
+                                                                 : c.push_direction_step,
+                                      .push_force_magnitude = true};
+      auto robust = make_problem_with_variants(prob, robust_variants(prob, vo));
+      const bool random_phase = c.push_phase == "random";
+      auto redraw = [&](std::int64_t i) {
+        if (random_phase)
+          redraw_push_phases(robust.variants, prob, vo,
+                             c.seed * 1000003ull + static_cast<std::uint64_t>(i));
+      };
+      optimize(robust, redraw, random_phase);
     }
   }
   // Check: the walk for check_seconds, recorded, and from 10 perturbed starts.

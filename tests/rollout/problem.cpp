@@ -93,6 +93,31 @@ TEST_CASE("a reused context gives the values of a fresh one", "[rollout][problem
   }
 }
 
+TEST_CASE("pushes changed between evaluations reach a context made before", "[rollout][problem]") {
+  // Between optimizer iterations a program may redraw the pushes (wang2012_walk --push-phase
+  // random): the context's copy of the options must not keep the old ones.
+  const floating_model m = wang2009_humanoid();
+  rollout_options ro;
+  ro.duration = 0.3;
+  ro.pushes = {push{0, vec3(120, 40, 0), 0.05, 0.15}};
+  rollout_problem prob{m,
+                       standing_pd(m, 1.0 / 2400.0),
+                       pose_hold(m),
+                       distance_objective(),
+                       flat_terrain{},
+                       semi_implicit_euler{},
+                       ro};
+  const Eigen::VectorXd x = Eigen::VectorXd::Zero(m.num_joint_dofs());
+  auto ctx = prob.make_context();
+  const rollout_result first = prob.evaluate(x, 0.3, ctx);
+  prob.options.pushes = {push{0, vec3(-200, 0, 0), 0.1, 0.1}, push{0, vec3(0, 90, 0), 0.2, 0.05}};
+  const rollout_result moved = prob.evaluate(x, 0.3, ctx);
+  CHECK(moved.com_final != first.com_final);
+  require_same(moved, prob.evaluate(x, 0.3));  // a fresh context: the same pushes, the same walk
+  prob.options.pushes.clear();
+  require_same(prob.evaluate(x, 0.3, ctx), prob.evaluate(x, 0.3));
+}
+
 TEST_CASE("a scratch reused for another body of the same size is rebuilt", "[rollout][problem]") {
   // Fig. 8a's body has the sizes of the nominal one; only the torso mass (40 -> 28 kg) and its
   // inertia differ. contact_state caches per-body inverse masses and the planar workspace per-body

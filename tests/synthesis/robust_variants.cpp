@@ -7,6 +7,7 @@
 
 #include <cmath>
 #include <set>
+#include <vector>
 
 #include "gaitsynth/actuators/pd.hpp"
 #include "gaitsynth/contact/flat_terrain.hpp"
@@ -104,6 +105,53 @@ TEST_CASE("robust_variants: seeded starts, then pushes on the documented schedul
   REQUIRE(w.size() == 1);
   CHECK(w[0].options.pushes.size() == 1);
   CHECK(robust_variants(prob, {}).empty());
+}
+
+TEST_CASE("redraw_push_phases: every pushed variant's pushes move by its own seeded phase") {
+  const floating_model m = wang2009_humanoid();
+  const auto prob = standing_problem(m);
+  const robust_variant_options o{.starts = 2,
+                                 .pushes = 8,
+                                 .push_period = 4.0,
+                                 .horizon = 14.0,
+                                 .push_direction_step = 0,
+                                 .push_force_magnitude = true};
+  auto v = robust_variants(prob, o);
+  const auto fixed = v;
+  redraw_push_phases(v, prob, o, 77);
+  const std::vector<double> phase = push_phases(o, 77);
+  REQUIRE(phase.size() == 8);
+  std::set<double> distinct;
+  for (int k = 0; k < 8; ++k) {
+    INFO("variant " << k << ", phase " << phase[k]);
+    CHECK(phase[k] >= 0.0);
+    CHECK(phase[k] < 4.0);
+    distinct.insert(phase[k]);
+    const auto& pushes = v[2 + k].options.pushes;
+    const auto& before = fixed[2 + k].options.pushes;
+    REQUIRE(pushes.size() >= 3);  // the problem's own, then 2 or 3 within 14 s
+    CHECK(pushes[0].start == prob.options.pushes[0].start);  // the problem's push kept
+    for (std::size_t i = 1; i < pushes.size(); ++i) {
+      CHECK(pushes[i].start == 2.0 + phase[k] + 4.0 * static_cast<double>(i - 1));
+      CHECK(pushes[i].start + pushes[i].duration < 14.0);
+      CHECK(pushes[i].force == before[1].force);  // the direction and force stay
+      CHECK(pushes[i].body == before[1].body);
+    }
+    CHECK(pushes.size() == (2.0 + phase[k] + 8.0 + 0.4 < 14.0 ? 4u : 3u));
+  }
+  CHECK(distinct.size() == 8);
+  for (int k = 0; k < 2; ++k) CHECK(v[k].options.pushes.size() == 1);  // starts untouched
+  // Deterministic per seed; another seed, other phases; redrawing replaces, never accumulates.
+  auto again = robust_variants(prob, o);
+  redraw_push_phases(again, prob, o, 78);
+  redraw_push_phases(again, prob, o, 77);
+  for (int k = 0; k < 10; ++k)
+    for (std::size_t i = 0; i < v[k].options.pushes.size(); ++i)
+      CHECK(again[k].options.pushes[i].start == v[k].options.pushes[i].start);
+  CHECK(push_phases(o, 78) != phase);
+  CHECK_THROWS_WITH(
+      redraw_push_phases(again, prob, robust_variant_options{.pushes = 3}, 1),
+      Catch::Matchers::Contains("expected 3 variants") && Catch::Matchers::Contains("got 10"));
 }
 
 TEST_CASE("robust_variants: bad options are refused naming the value") {

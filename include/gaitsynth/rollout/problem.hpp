@@ -9,12 +9,16 @@
 ///   double c = prob.cost(x, 10.0, ctx);              // allocates nothing when the policies don't
 ///   rollout_result r = prob.evaluate(x, 70.0, ctx);  // one rollout, with its stop reason
 ///
-/// A problem is immutable during an optimization and shared by all workers; everything a rollout
-/// writes lives in the worker's context (rollout scratch, a copy of the controller to bind, of the
-/// integrator, and of the options). Reusing a context gives bit-identical results to a fresh one
-/// (tests/rollout/problem.cpp), so a value never depends on which worker computed it, and an MPI
-/// evaluator can give every rank its own problem instance and contexts. The overloads without a
-/// context make a temporary one (allocates; fine for a check, not for an optimization loop).
+/// A problem is immutable during an optimizer's iteration and shared by all workers; everything a
+/// rollout writes lives in the worker's context (rollout scratch, a copy of the controller to
+/// bind, of the integrator, and of the options). Between iterations a program may change the
+/// problem's start (options.initial_state) and pushes (options.pushes): every evaluation reads
+/// those two from the problem (a new terrain or new pushes per iteration: wu2010_walk,
+/// wang2012_walk --push-phase random); the rest of the options is the context's copy. Reusing a
+/// context gives bit-identical results to a fresh one (tests/rollout/problem.cpp), so a value never
+/// depends on which worker computed it, and an MPI evaluator can give every rank its own problem
+/// instance and contexts. The overloads without a context make a temporary one (allocates; fine for
+/// a check, not for an optimization loop).
 ///
 /// The cost sums the objective over the start states (`starts`; empty: options.initial_state
 /// alone). Other terrains, bodies or pushes come in as variants
@@ -187,6 +191,7 @@ struct rollout_problem {
     o.initial_state.t = s.t;  // same sizes after the first call: no allocation
     o.initial_state.q = s.q;
     o.initial_state.v = s.v;
+    o.pushes = options.pushes;  // reuses the copy's storage unless there are more pushes
     o.duration = horizon;
     o.record = record;
     o.record_every = record_every;

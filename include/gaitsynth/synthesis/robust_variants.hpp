@@ -14,11 +14,20 @@
 /// The robust stages of the Wang 2009 and Wang 2012 walkers (examples/wang2009_walk.cpp,
 /// examples/wang2012_walk.cpp) use it; seed them apart from a claim test's perturbations, so the
 /// test judges starts the optimization never saw.
+///
+/// Pushes at fixed times can be learned: a candidate that survives them because of where in its
+/// gait cycle they land need not survive the same pushes a second later (Table 1's protocol
+/// pushes at 4, 8, ... s). redraw_push_phases moves every pushed variant's pushes by its own
+/// phase in [0, push_period), drawn from a seed: called between optimizer iterations with a seed
+/// per iteration, as Wang et al. 2010 draw a problem's disturbances anew, every candidate of an
+/// iteration still meets the same pushes.
 #include <cmath>
 #include <cstdint>
+#include <random>
 #include <string>
 #include <vector>
 
+#include "gaitsynth/detail/uniform01.hpp"
 #include "gaitsynth/error.hpp"
 #include "gaitsynth/rollout/push_test.hpp"
 #include "gaitsynth/rollout/start_perturbations.hpp"
@@ -41,6 +50,20 @@ struct robust_variant_options {
   /// true: push_force newtons along every direction (Wang 2012 Sec. 6.4's "100 N pushes").
   bool push_force_magnitude = false;
 };
+
+/// Pushed variant k's pushes on `body` (k from 0 among the pushed variants), the first starting at
+/// `first_push`: every push_period, as long as it ends before the horizon.
+inline std::vector<push> variant_pushes(int body, const robust_variant_options& o, int k,
+                                        double first_push) {
+  std::vector<push> out;
+  for (int i = 0; first_push + o.push_period * i + o.push_duration < o.horizon; ++i) {
+    const vec3& t =
+        table1_directions()[static_cast<std::size_t>((k + i * o.push_direction_step) % 8)];
+    const vec3 d = o.push_force_magnitude ? vec3(t.normalized()) : t;
+    out.push_back(push{body, o.push_force * d, first_push + o.push_period * i, o.push_duration});
+  }
+  return out;
+}
 
 /// The variants of `prob` (a rollout_problem: its `character` and `options` are read) that `o`
 /// asks for, starts first. Throws std::invalid_argument for a negative count, a non-finite or
@@ -73,16 +96,45 @@ std::vector<Problem> robust_variants(const Problem& prob, const robust_variant_o
   const int body = prob.character.body_index(o.push_body);  // throws naming an unknown body
   for (int k = 0; k < o.pushes; ++k) {
     Problem v = prob;
-    for (int i = 0; o.first_push + o.push_period * i + o.push_duration < o.horizon; ++i) {
-      const vec3& t =
-          table1_directions()[static_cast<std::size_t>((k + i * o.push_direction_step) % 8)];
-      const vec3 d = o.push_force_magnitude ? vec3(t.normalized()) : t;
-      v.options.pushes.push_back(
-          push{body, o.push_force * d, o.first_push + o.push_period * i, o.push_duration});
-    }
+    for (const push& p : variant_pushes(body, o, k, o.first_push)) v.options.pushes.push_back(p);
     out.push_back(std::move(v));
   }
   return out;
+}
+
+/// The phases redraw_push_phases gives the o.pushes pushed variants for `seed`: each uniform in
+/// [0, push_period), from its own stream (seed, k), so they do not depend on the variant count.
+inline std::vector<double> push_phases(const robust_variant_options& o, std::uint64_t seed) {
+  std::vector<double> out;
+  for (int k = 0; k < o.pushes; ++k) {
+    std::seed_seq seq{static_cast<std::uint32_t>(seed), static_cast<std::uint32_t>(seed >> 32),
+                      static_cast<std::uint32_t>(k)};
+    std::mt19937_64 rng(seq);
+    out.push_back(o.push_period * detail::uniform01(rng));
+  }
+  return out;
+}
+
+/// Replaces the pushes of the pushed variants of `variants` (as robust_variants(prob, o) made
+/// them: the o.starts start variants first) with the same pushes moved by push_phases(o, seed):
+/// variant k's first push at first_push + phase_k. Pushes the problem had before
+/// robust_variants are kept. Throws std::invalid_argument if `variants` is not o.starts +
+/// o.pushes long.
+template <class Problem>
+void redraw_push_phases(std::vector<Problem>& variants, const Problem& prob,
+                        const robust_variant_options& o, std::uint64_t seed) {
+  check_argument(std::ssize(variants) == o.starts + o.pushes, "redraw_push_phases: expected ",
+                 o.starts + o.pushes, " variants (starts + pushes), got ", variants.size());
+  if (o.pushes == 0) return;
+  const int body = prob.character.body_index(o.push_body);
+  const std::vector<double> phase = push_phases(o, seed);
+  for (int k = 0; k < o.pushes; ++k) {
+    Problem& v = variants[static_cast<std::size_t>(o.starts + k)];
+    v.options.pushes = prob.options.pushes;
+    for (const push& p :
+         variant_pushes(body, o, k, o.first_push + phase[static_cast<std::size_t>(k)]))
+      v.options.pushes.push_back(p);
+  }
 }
 
 }  // namespace gaitsynth
