@@ -18,7 +18,8 @@
 //   wu2010_walk [--iterations N] [--threads N] [--seed K] [--out DIR] [--init FILE]
 //               [--horizon S] [--flat] [--fall-penalty W] [--check-seconds S]
 //               [--controller-rate HZ] [--sigma S] [--cost-timestep S]
-//               [--stance-target planned_landing|touchdown] [--pin-by frame_geometry|link]
+//               [--stance-target planned_landing|touchdown|first_contact]
+//               [--pin-by frame_geometry|link]
 //               [--no-helper]
 //               [--divergence fall|infinite] [--robust-starts K] [--start-sigma S]
 //               [--leg-collisions on|off] [--task f|b|l|r|s] [--h-max-cap N]
@@ -64,7 +65,8 @@
 // --resume of a run that did not record this option keeps 0).
 //
 // Stance target (--stance-target, ours; default the paper's planned_landing): touchdown re-targets
-// the stance foot to where it landed (planned_walk_options::stance_target).
+// the stance foot to where it landed once the previous swing's tail is over, first_contact from
+// its first ground contact, tail or not (planned_walk_options::stance_target).
 //
 // --pin-by (Sec. 6.3's contact test, ours to choose: the paper says "the geometry to which a
 // stationary action frame is attached"; default frame_geometry, the frame's own box): link pins
@@ -273,9 +275,11 @@ cli parse(int argc, char** argv) {
                  "controller)")
       ->check(example_cli::in_range(1e-9, 1.0));
   app.add_option("--stance-target", c.stance_target,
-                 "the stance foot's stationary target: planned_landing (the paper, Fig. 5) or "
-                 "touchdown (ours: where it landed; a saved controller's own when replaying)")
-      ->check(CLI::IsMember({"planned_landing", "touchdown"}));
+                 "the stance foot's stationary target: planned_landing (the paper, Fig. 5), "
+                 "touchdown (ours: where it landed, after the previous swing's tail) or "
+                 "first_contact (ours: from its first contact, tail or not); a saved "
+                 "controller's own when replaying")
+      ->check(CLI::IsMember({"planned_landing", "touchdown", "first_contact"}));
   app.add_option("--pin-by", c.pin_by,
                  "Sec. 6.3's contact test for pinning a stationary frame: its own geometry "
                  "(frame_geometry: the heel box for the heel frame) or any of its foot's (link); "
@@ -493,8 +497,9 @@ int run(const cli& c) {
   bool implicit = c.implicit_damping == "on";
   std::string task = c.task;
   po.helper_force = !c.no_helper;
-  po.stance_target = c.stance_target == "touchdown" ? stance_foot_target::touchdown
-                                                    : stance_foot_target::planned_landing;
+  po.stance_target = c.stance_target == "touchdown"       ? stance_foot_target::touchdown
+                     : c.stance_target == "first_contact" ? stance_foot_target::first_contact
+                                                          : stance_foot_target::planned_landing;
   po.lower.pin_by = c.pin_by == "link" ? pin_contact::link : pin_contact::frame_geometry;
   if (!from.empty()) {
     const planned_walk_saved s = load_planned_walk(from);
@@ -538,8 +543,10 @@ int run(const cli& c) {
   po.period = rate > 0.0 ? 1.0 / rate : 0.0;
   po.setup.terrain_awareness = !terrain_blind;
   const bool helper = po.helper_force;
-  const std::string stance_target =
-      po.stance_target == stance_foot_target::touchdown ? "touchdown" : "planned_landing";
+  const std::string stance_target = po.stance_target == stance_foot_target::touchdown ? "touchdown"
+                                    : po.stance_target == stance_foot_target::first_contact
+                                        ? "first_contact"
+                                        : "planned_landing";
   const std::string pin_by = po.lower.pin_by == pin_contact::link ? "link" : "frame_geometry";
   const walk_controller ctrl(m, ground, po);
   const std::vector<std::string> names = ctrl.parameter_names();

@@ -10,7 +10,9 @@
 // Pinned frames (Sec. 6.3) leave the QP and are counted apart. Then, per foot, the net force of
 // the residual over its unpinned frames (what the joints left out, as opposed to forces between
 // the frames of one rigid foot, which cancel) and of the clipped helper; why a standing foot's
-// frames were not pinned; and how often each joint's torque sits at its bound. PIN_BY=link in
+// frames were not pinned; and how often each joint's torque sits at its bound. STANCE_TARGET=
+// first_contact in the environment replays with that stance target instead of the saved one;
+// PIN_BY=link in
 // the environment replays with lower_level_options::pin_by = link instead of the saved
 // controller's contact test. Compile against the tree's include/:
 //
@@ -177,6 +179,8 @@ int main(int argc, char** argv) try {
   po.helper_force = true;
   if (const char* pin = std::getenv("PIN_BY"); pin && std::string(pin) == "link")
     po.lower.pin_by = pin_contact::link;
+  if (const char* st = std::getenv("STANCE_TARGET"); st && std::string(st) == "first_contact")
+    po.stance_target = stance_foot_target::first_contact;
   const planned_walk<> c(m, flat_terrain{}, po);
   const std::vector<double> x = planned_walk_values(saved, c.parameter_names(), file);
   rollout_options o = gaitsynth_scripts::saved_rollout_options(m, saved, seconds);

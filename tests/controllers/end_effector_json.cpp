@@ -190,8 +190,15 @@ TEST_CASE("planned_walk JSON: malformed files are refused, named",
   CHECK_THAT(option_error("controller_rate", 1.0),
              Catch::Contains("o.json: controller_rate must be 0 or above 2 Hz, got 1.0"));
   CHECK_THAT(option_error("controller_rate", "fast"), Catch::Contains("got \"fast\""));
-  CHECK_THAT(option_error("stance_target", "heel"),
-             Catch::Contains("stance_target") && Catch::Contains("\"heel\""));
+  CHECK_THAT(option_error("stance_target", "heel"), Catch::Contains("stance_target") &&
+                                                        Catch::Contains("\"heel\"") &&
+                                                        Catch::Contains("\"first_contact\""));
+  {
+    planned_walk_saved s;
+    s.info["stance_target"] = "first_contact";
+    CHECK(saved_planned_walk_options(s, "o.json").stance_target ==
+          stance_foot_target::first_contact);
+  }
   CHECK_THAT(option_error("helper_force", 1),
              Catch::Contains("helper_force must be true or false"));
   CHECK_THAT(option_error("pin_by", "toe"),

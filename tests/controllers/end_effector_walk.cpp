@@ -464,3 +464,36 @@ TEST_CASE("planned_walk: stance_target touchdown pins the stance foot where it l
   CHECK(pinned[0] == 0);  // measured: 0 of 1320 steps
   CHECK(pinned[1] > 0);   // measured: 94
 }
+
+TEST_CASE("planned_walk: stance_target first_contact anchors at the first contact, tail or not",
+          "[controllers][end_effector][walk]") {
+  // The same walk as above. touchdown waits for the end of the previous swing's tail (t_e' =
+  // 0.1 s into half-cycle 1); first_contact anchors at the foot's first ground contact of the
+  // half-cycle, which here comes during that tail, and pins it from then on.
+  const floating_model m = wu2010_biped();
+  stance_log logs[2];
+  for (const bool first : {false, true}) {
+    planned_walk_options o;
+    o.stance_target = first ? stance_foot_target::first_contact : stance_foot_target::touchdown;
+    const planned_walk<> c(m, flat_terrain{}, o);
+    rollout_options ro;
+    ro.duration = 1.1;
+    ro.detect_falls = false;
+    ro.initial_state = make_state(m);
+    place_on_terrain(m, flat_terrain{}, ro.initial_state.q);
+    auto scratch = make_rollout_scratch(m);
+    stance_log& log = logs[first];
+    log.layout = &c.layout();
+    (void)rollout(m, torque_actuator{}, c, distance_objective(), flat_terrain{},
+                  semi_implicit_euler(), c.default_parameters(), ro, scratch, log);
+  }
+  INFO("anchored at " << logs[0].anchor_time << " s (touchdown), " << logs[1].anchor_time
+                      << " s (first_contact)");
+  REQUIRE(logs[1].anchored);
+  CHECK(logs[1].anchor_time < 0.55 + 0.1);  // within the tail
+  CHECK(logs[1].anchor_time < logs[0].anchor_time);
+  CHECK(logs[1].anchor_miss < 2e-3);
+  CHECK(logs[1].target_is_anchor);
+  CHECK(logs[1].pinned_at_anchor);
+  CHECK(logs[1].pinned_steps > logs[0].pinned_steps);
+}

@@ -68,7 +68,7 @@ case "$mode" in
         expect 2 "--check-seconds: must be in .*, got -5" -- "$exe" --check-seconds -5
       fi
       if grep -q -- "--stance-target" <<<"$help"; then
-        expect 2 "--stance-target: sideways not in \{planned_landing,touchdown\}" -- \
+        expect 2 "--stance-target: sideways not in \{planned_landing,touchdown,first_contact\}" -- \
           "$exe" --stance-target sideways
         expect 2 "--pin-by: heel not in \{frame_geometry,link\}" -- "$exe" --pin-by heel
         expect 2 "--implicit-damping: yes not in \{on,off\}" -- "$exe" --implicit-damping yes

@@ -77,6 +77,9 @@ namespace gaitsynth {
 enum class stance_foot_target {
   planned_landing,  ///< the paper: where the previous swing was planned to end
   touchdown,        ///< ours: where the foot touched down (touchdown_stance_target)
+  /// ours: the same from its first ground contact in the half-cycle, even during the previous
+  /// swing's tail, so a foot that lands early is pinned (Sec. 6.3) from then on
+  first_contact,
 };
 
 /// How Omega_1 and Pi_1 relate to Omega_0 and Pi_0.
@@ -122,7 +125,8 @@ struct planned_walk_options {
   stance_side first_stance = stance_side::left;  ///< who stands in half-cycle 0 (Omega_0's)
   /// Fig. 5 keeps the stance foot at the previous swing's planned end, so a foot that lands
   /// farther than eps_p from it is never pinned (Sec. 6.3) and eq. 5 drags it over the ground;
-  /// touchdown (ours) re-targets it, at its first ground contact after t_e', to where it landed.
+  /// touchdown (ours) re-targets it, at its first ground contact after t_e', to where it landed;
+  /// first_contact (ours) at its first ground contact in the half-cycle, tail or not.
   stance_foot_target stance_target = stance_foot_target::planned_landing;
   lower_level_options lower{};
   tracking_weights tracking{};  ///< Sec. 8.1's tracking report (Sec. 8.3's weights)
@@ -403,7 +407,7 @@ class planned_walk {
     const half_cycle_plan& p = st.plans[static_cast<std::size_t>(st.current)];
     const double t_plan = std::max(0.0, s.t - st.half_cycle_start);
     p.link_targets(t_plan, st.targets);
-    if (opt_.stance_target == stance_foot_target::touchdown) hold_touchdown(s, st, p, t_plan);
+    if (opt_.stance_target != stance_foot_target::planned_landing) hold_touchdown(s, st, p, t_plan);
     const end_effector_gains& g = gains_[static_cast<std::size_t>(st.half_cycle % 2)];
     const Eigen::VectorXd& tau = lower_level_torques(s.model(), layout_, g, opt_.lower, s.q(),
                                                      s.v(), st.targets, s.contact_active, st.lower);
@@ -450,12 +454,14 @@ class planned_walk {
 
   /// stance_target touchdown: once the previous swing's tail is over (t >= t_e') and a contact
   /// point of the stance foot touches, its target becomes where it is (touchdown_stance_target)
-  /// for the rest of the half-cycle. Before that, the plan's target.
+  /// for the rest of the half-cycle. Before that, the plan's target. first_contact: the same
+  /// without waiting for the tail's end.
   void hold_touchdown(const sensors<Root>& s, state_type& st, const half_cycle_plan& p,
                       double t) const {
     const std::size_t link = st.stance == stance_side::left ? 1 : 2;
     if (!st.stance_anchored) {
-      if (p.has_tail && t < p.tail_end) return;
+      if (opt_.stance_target == stance_foot_target::touchdown && p.has_tail && t < p.tail_end)
+        return;
       bool touching = false;
       for (const action_frame& a : layout_.action)
         touching = touching ||

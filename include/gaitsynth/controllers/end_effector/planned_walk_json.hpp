@@ -158,7 +158,8 @@ inline std::vector<double> planned_walk_values(const planned_walk_saved& s,
 }
 
 /// `base` with what the file records about how the controller ran: "controller_rate" (Hz, 0:
-/// every physics step) as the period, "stance_target" ("planned_landing" or "touchdown"),
+/// every physics step) as the period, "stance_target" ("planned_landing", "touchdown" or
+/// "first_contact"),
 /// "helper_force", "symmetry" and "pin_by" (Sec. 6.3's contact test: "frame_geometry" or "link").
 /// Entries the file lacks leave base's values; a malformed one throws, named.
 inline planned_walk_options saved_planned_walk_options(const planned_walk_saved& s,
@@ -180,8 +181,10 @@ inline planned_walk_options saved_planned_walk_options(const planned_walk_saved&
       base.stance_target = stance_foot_target::planned_landing;
     else if (v == "touchdown")
       base.stance_target = stance_foot_target::touchdown;
+    else if (v == "first_contact")
+      base.stance_target = stance_foot_target::first_contact;
     else
-      fail("stance_target", v, "\"planned_landing\" or \"touchdown\"");
+      fail("stance_target", v, "\"planned_landing\", \"touchdown\" or \"first_contact\"");
   }
   if (s.info.contains("symmetry")) {
     const nlohmann::json& v = s.info["symmetry"];
