@@ -45,6 +45,9 @@ struct reported {
   bool human_ratio = false;      ///< claimed: every component within 0.05 of [0.43, 0.04, 0.53]
   /// The torso's mean world pitch after 2 s, degrees, when the page reports it (within 1.5).
   std::optional<double> torso_pitch_deg = std::nullopt;
+  /// Where both ankles' mean power curves peak, as a fraction of stance (the start of the peak
+  /// tenth), at least, when the page claims it.
+  std::optional<double> push_off_peak_from = std::nullopt;
 };
 
 template <class Terrain>
@@ -107,6 +110,7 @@ void check_walker_on(const reported& w, const Terrain& ground) {
     INFO(s << " ankle: mean power curve peaks at " << a.mean_curve_peak_fraction << " of stance");
     CHECK(a.stances.size() > 50u);
     CHECK((a.mean_curve_peak_fraction >= 0.5) == w.push_off[static_cast<std::size_t>(side)]);
+    if (w.push_off_peak_from) CHECK(a.mean_curve_peak_fraction >= *w.push_off_peak_from - 1e-9);
   }
 
   opt.record = nullptr;
@@ -228,6 +232,22 @@ TEST_CASE("wang2009: the push-off walker walks 100 s and pushes off in late stan
                 {true, true},
                 true,
                 -1.5});
+}
+
+// The c_trans continuation on (ours): two more stages on 20 s evaluations with three perturbed
+// starts in every candidate's cost, to c_trans >= 0.05 m (session 27). The plantarflexors' power
+// peaks at 70-80 % of stance (a person's: 80-90 %), with the human ratio, upright.
+TEST_CASE("wang2009: the late push-off walker walks 100 s and pushes off at 70-80 % of stance",
+          "[wang2009][claim]") {
+  check_walker({"stocky_late_push_off.controller.json",
+                1.671,
+                0.239,
+                {0.416, 0.048, 0.536},
+                10,
+                {true, true},
+                true,
+                -7.0,
+                0.7});
 }
 
 // The upright walker asked for 0.6 m steps at once (1000 iterations): longer steps, the ratio
