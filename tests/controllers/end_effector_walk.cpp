@@ -422,6 +422,25 @@ struct stance_log {
   }
 };
 
+/// The default parameters' first 1.1 s (falls not stopped) with stance target `target`, logged.
+stance_log stance_walk(const floating_model& m, stance_foot_target target) {
+  planned_walk_options o;
+  o.stance_target = target;
+  const planned_walk<> c(m, flat_terrain{}, o);
+  rollout_options ro;
+  ro.duration = 1.1;
+  ro.detect_falls = false;
+  ro.initial_state = make_state(m);
+  place_on_terrain(m, flat_terrain{}, ro.initial_state.q);
+  auto scratch = make_rollout_scratch(m);
+  stance_log log;
+  log.layout = &c.layout();
+  (void)rollout(m, torque_actuator{}, c, distance_objective(), flat_terrain{},
+                semi_implicit_euler(), c.default_parameters(), ro, scratch, log);
+  log.layout = nullptr;  // c's layout ends here
+  return log;
+}
+
 }  // namespace
 
 TEST_CASE("planned_walk: stance_target touchdown pins the stance foot where it landed",
@@ -434,19 +453,8 @@ TEST_CASE("planned_walk: stance_target touchdown pins the stance foot where it l
   const floating_model m = wu2010_biped();
   std::int64_t pinned[2] = {0, 0}, steps[2] = {0, 0};
   for (const bool touchdown : {false, true}) {
-    planned_walk_options o;
-    if (touchdown) o.stance_target = stance_foot_target::touchdown;
-    const planned_walk<> c(m, flat_terrain{}, o);
-    rollout_options ro;
-    ro.duration = 1.1;
-    ro.detect_falls = false;
-    ro.initial_state = make_state(m);
-    place_on_terrain(m, flat_terrain{}, ro.initial_state.q);
-    auto scratch = make_rollout_scratch(m);
-    stance_log log;
-    log.layout = &c.layout();
-    (void)rollout(m, torque_actuator{}, c, distance_objective(), flat_terrain{},
-                  semi_implicit_euler(), c.default_parameters(), ro, scratch, log);
+    const stance_log log = stance_walk(
+        m, touchdown ? stance_foot_target::touchdown : stance_foot_target::planned_landing);
     pinned[touchdown] = log.pinned_steps;
     steps[touchdown] = log.steps;
     INFO("touchdown " << touchdown);
@@ -471,22 +479,8 @@ TEST_CASE("planned_walk: stance_target first_contact anchors at the first contac
   // 0.1 s into half-cycle 1); first_contact anchors at the foot's first ground contact of the
   // half-cycle, which here comes during that tail, and pins it from then on.
   const floating_model m = wu2010_biped();
-  stance_log logs[2];
-  for (const bool first : {false, true}) {
-    planned_walk_options o;
-    o.stance_target = first ? stance_foot_target::first_contact : stance_foot_target::touchdown;
-    const planned_walk<> c(m, flat_terrain{}, o);
-    rollout_options ro;
-    ro.duration = 1.1;
-    ro.detect_falls = false;
-    ro.initial_state = make_state(m);
-    place_on_terrain(m, flat_terrain{}, ro.initial_state.q);
-    auto scratch = make_rollout_scratch(m);
-    stance_log& log = logs[first];
-    log.layout = &c.layout();
-    (void)rollout(m, torque_actuator{}, c, distance_objective(), flat_terrain{},
-                  semi_implicit_euler(), c.default_parameters(), ro, scratch, log);
-  }
+  const stance_log logs[2] = {stance_walk(m, stance_foot_target::touchdown),
+                              stance_walk(m, stance_foot_target::first_contact)};
   INFO("anchored at " << logs[0].anchor_time << " s (touchdown), " << logs[1].anchor_time
                       << " s (first_contact)");
   REQUIRE(logs[1].anchored);
