@@ -239,8 +239,8 @@ class musculotendon_actuator {
   }
 
   std::vector<musculotendon::unit> units_;
-  std::vector<std::array<double, 2>>
-      reference_sines_;  ///< per MTU: its crossings' reference_sine()
+  /// Per MTU, its crossings' reference_sine(): constant, so computed once here.
+  std::vector<std::array<double, 2>> reference_sines_;
   double initial_activation_;
 };
 

@@ -35,7 +35,7 @@ struct joint_crossing {
   double angle(double q) const { return angle_offset + angle_scale * q; }
 
   /// sin(phi_ref - phi_max), the constant of a variable arm's length (0 for a constant arm): an
-  /// actuator computes it once (crossing_geometry) instead of every step.
+  /// actuator computes it once (unit::reference_sines) instead of every step.
   double reference_sine() const {
     return constant_arm() ? 0.0 : std::sin(reference_angle - angle_of_max_arm);
   }
