@@ -59,6 +59,7 @@
 #include "command_line.hpp"
 #include "gaitsynth/analysis/ankle_push_off.hpp"
 #include "gaitsynth/analysis/arm_swing.hpp"
+#include "gaitsynth/analysis/human_gait_comparison.hpp"
 #include "gaitsynth/analysis/torso_lean.hpp"
 #include "gaitsynth/controllers/fsm/simbicon.hpp"
 #include "gaitsynth/controllers/fsm/wang2009_json.hpp"
@@ -237,27 +238,36 @@ void write_views(const floating_model& m, const trajectory& tr, const cli& c,
   v.filmstrip_front.t_begin = std::max(0.0, v.filmstrip_front.t_end - 0.8);
   v.filmstrip_front.interval = 0.1;
   v.filmstrip_front.title = title + ", from the front";
-  // Fig. 6's curves: the left thigh's and foot's world pitch and the left knee, over the cycles
-  // from left heel strike to left heel strike.
+  // Fig. 6's curves, the left thigh's and foot's world pitch and the left knee, over the cycles
+  // from left heel strike to left heel strike; between them the hip and ankle joint angles, which
+  // Fig. 6 does not draw, so that all three joints meet the human data.
   using kind = gait_channel::kind;
+  const std::vector<gait_channel> joints = human_sagittal_channels("l");
   v.gait.cycles.channels = {
       {.type = kind::segment_pitch, .label = "thigh orientation", .name = "lthigh"},
-      {.type = kind::joint_angle, .label = "knee angle", .name = "lknee"},
+      joints[0],
+      joints[1],
+      joints[2],
       {.type = kind::segment_pitch, .label = "foot orientation", .name = "lfoot"}};
-  v.gait.title = title + ": gait cycles (Fig. 6)";
-  // The human knee over the same cycle, as Fig. 6 overlays motion capture (data/normative_gait/:
-  // one adult at 1.32 m/s, mean and s.d. over 11 trials). Only the knee: the data has joint
+  v.gait.cycles.channels[1].label = "hip flexion";
+  v.gait.cycles.channels[2].label = "knee angle";
+  v.gait.cycles.channels[3].label = "ankle dorsiflexion";
+  v.gait.title = title + ": gait cycles (Fig. 6, with the hip and ankle angles)";
+  // The human joints over the same cycle, as Fig. 6 overlays motion capture (data/normative_gait/:
+  // one adult at 1.32 m/s, mean and s.d. over 11 trials). Only the joints: the data has joint
   // angles, and Fig. 6's thigh and foot curves are segment orientations.
   const std::string human =
       std::string(GAITSYNTH_SOURCE_DIR) + "/data/normative_gait/falisse2019_subject1_walking.csv";
   if (std::ifstream(human).good()) {
     const normative_gait data = load_normative_gait(human);
-    const normative_curve& knee = data.curve("knee_flexion_angle");
-    v.gait.references = {{.channel = 1,
-                          .label = "human, 1.32 m/s (Falisse et al. 2019)",
-                          .percent = knee.percent,
-                          .mean = knee.mean,
-                          .sd = knee.sd}};
+    for (std::size_t k = 0; k < joints.size(); ++k) {
+      const normative_curve& h = data.curve(joints[k].label);
+      v.gait.references.push_back({.channel = k + 1,
+                                   .label = "human, 1.32 m/s (Falisse et al. 2019)",
+                                   .percent = h.percent,
+                                   .mean = h.mean,
+                                   .sd = h.sd});
+    }
   }
   v.gait.show_cycles = false;  // the mean and its band, as Fig. 6 draws them
   write_viz_outputs(m, tr, v, &std::cerr);
@@ -296,14 +306,37 @@ nlohmann::json push_off_summary(const floating_model& m, const trajectory& tr) {
   return j;
 }
 
+/// The left hip, knee and ankle angles and moments per kg after the first 2 s against the adult
+/// of data/normative_gait/ (analysis/human_gait_comparison.hpp): sum["standard_scores"] and
+/// sum["human_mean_differences"] (degrees, N m/kg), each null where the walk has no complete cycle
+/// there.
+void add_human_comparison(nlohmann::json& sum, const floating_model& m, const trajectory& tr) {
+  sum["standard_scores"] = nullptr;
+  sum["human_mean_differences"] = nullptr;
+  const std::string file =
+      std::string(GAITSYNTH_SOURCE_DIR) + "/data/normative_gait/falisse2019_subject1_walking.csv";
+  if (tr.frames.empty() || tr.frames.back().t < 4.0 || !std::ifstream(file).good()) return;
+  const normative_gait human = load_normative_gait(file);
+  const human_gait_comparison hc = compare_with_human(m, tr, human);
+  if (hc.scores.empty()) return;
+  for (std::size_t k = 0; k < hc.labels.size(); ++k) {
+    sum["standard_scores"][hc.labels[k]] = hc.scores[k];
+    sum["human_mean_differences"][hc.labels[k]] = hc.mean_differences[k];
+  }
+}
+
 /// The torso's lean (analysis/torso_lean.hpp) after the first 2 s, degrees: its mean world
-/// sagittal angle (positive leaning forward) and the largest tilt from the vertical.
+/// sagittal angle (positive leaning forward) and the largest tilt from the vertical; the pelvis's
+/// mean world sagittal angle.
 void add_torso_lean(nlohmann::json& sum, const floating_model& m, const trajectory& tr) {
   sum["torso_pitch_deg"] = nullptr;
   if (tr.frames.empty() || tr.frames.back().t < 2.0) return;
   const torso_lean_report t = torso_lean(m, tr, 2.0);
   sum["torso_pitch_deg"] = t.mean_pitch * 180.0 / std::numbers::pi;
   sum["torso_max_tilt_deg"] = t.max_tilt * 180.0 / std::numbers::pi;
+  // The pelvis too: the hips' angles are measured from it, so a pelvis tilted back reads as
+  // extended hips under an upright torso.
+  sum["pelvis_pitch_deg"] = torso_lean(m, tr, 2.0, "pelvis").mean_pitch * 180.0 / std::numbers::pi;
 }
 
 /// Fig. 4's arm swing (analysis/arm_swing.hpp) after the first 2 s: opposite-leg correlation
@@ -349,6 +382,7 @@ int run_simbicon(const floating_model& m, const cli& c) {
   sum["ankle_push_off"] = push_off_summary(m, tr);
   sum["arm_swing"] = arm_swing_summary(m, tr);
   add_torso_lean(sum, m, tr);
+  add_human_comparison(sum, m, tr);
   example_cli::report_summary(sum, c.out);
   return 0;
 }
@@ -473,6 +507,7 @@ int optimize_and_check(const floating_model& m, const cli& c, const wang2009_con
   sum["ankle_push_off"] = push_off_summary(m, tr);
   sum["arm_swing"] = arm_swing_summary(m, tr);
   add_torso_lean(sum, m, tr);
+  add_human_comparison(sum, m, tr);
   sum["horizon"] = c.horizon;
   sum["without"] = c.without;
   sum["weights"] = c.weights;

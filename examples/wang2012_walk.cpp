@@ -56,9 +56,9 @@
 #include "command_line.hpp"
 #include "gaitsynth/actuators/musculotendon/leg_muscles.hpp"
 #include "gaitsynth/actuators/musculotendon_actuator.hpp"
+#include "gaitsynth/analysis/human_gait_comparison.hpp"
 #include "gaitsynth/analysis/muscle_recording.hpp"
 #include "gaitsynth/analysis/sagittal_gait_features.hpp"
-#include "gaitsynth/analysis/standard_score.hpp"
 #include "gaitsynth/controllers/reflex/wang2012_json.hpp"
 #include "gaitsynth/gaitsynth.hpp"
 #include "gaitsynth/io/csv.hpp"
@@ -356,32 +356,33 @@ int run_with(const cli& c, const floating_model& m, const std::vector<musculoten
               check, scratch, musculotendon_recorder(act, &muscles, check.record_every));
   save_csv(stem + ".csv", tr);
   // Gait cycles of the left leg (after the first 2 s): hip, knee and ankle angles and torques per
-  // kg, against the adult data of data/normative_gait/ with their standard scores.
+  // kg, against the adult data of data/normative_gait/ with their standard scores
+  // (analysis/human_gait_comparison.hpp).
   const normative_gait human = load_normative_gait(
       std::string(GAITSYNTH_SOURCE_DIR) + "/data/normative_gait/falisse2019_subject1_walking.csv");
-  std::vector<gait_channel> channels = human_sagittal_channels("l");
-  for (const gait_channel& g : human_sagittal_moment_channels("l", m.total_mass()))
-    channels.push_back(g);
   gait_cycle_options go;
-  go.channels = channels;
+  go.channels = human_comparison_channels("l", m.total_mass());
   go.samples = 100;
   std::vector<gait_reference> references;
-  nlohmann::json scores = nlohmann::json::object(), features = nlohmann::json::object();
+  nlohmann::json scores = nlohmann::json::object(), differences = nlohmann::json::object(),
+                 features = nlohmann::json::object();
   if (!tr.frames.empty() && tr.frames.back().t > 4.0) {
-    trajectory steady = tr;
-    std::erase_if(steady.frames, [](const trajectory_frame& f) { return f.t < 2.0; });
-    const gait_cycle_data g = gait_cycles(m, steady, go);
-    for (std::size_t k = 0; k < channels.size(); ++k) {
-      const normative_curve& h = human.curve(channels[k].label);
+    const human_gait_comparison hc = compare_with_human(m, tr, human);
+    for (std::size_t k = 0; k < hc.labels.size(); ++k) {
+      const normative_curve& h = human.curve(hc.labels[k]);
       references.push_back({.channel = k,
                             .label = "human, 1.32 m/s (Falisse et al. 2019)",
                             .percent = h.percent,
                             .mean = h.mean,
                             .sd = h.sd});
-      if (g.num_cycles() >= 1) scores[channels[k].label] = standard_score(g.percent, g.mean[k], h);
+      if (!hc.scores.empty()) {
+        scores[hc.labels[k]] = hc.scores[k];
+        differences[hc.labels[k]] = hc.mean_differences[k];
+      }
     }
-    if (g.num_cycles() >= 1) {  // Sec. 6.2's comparisons (analysis/sagittal_gait_features.hpp)
-      const sagittal_gait_features f = sagittal_gait_features_of(g);
+    // Sec. 6.2's comparisons (analysis/sagittal_gait_features.hpp).
+    if (hc.cycles.num_cycles() >= 1) {
+      const sagittal_gait_features f = sagittal_gait_features_of(hc.cycles);
       features["knee_flexion_mid_stance_min"] = f.knee_flexion_mid_stance_min;
       features["knee_flexion_mid_stance_mean"] = f.knee_flexion_mid_stance_mean;
       features["knee_flexion_swing_max"] = f.knee_flexion_swing_max;
@@ -479,6 +480,7 @@ int run_with(const cli& c, const floating_model& m, const std::vector<musculoten
     sum["pushes"] = pushes;
   }
   sum["standard_scores"] = scores;
+  sum["human_mean_differences"] = differences;
   sum["gas"] = gas;
   sum["gait_features_deg"] = features;
   sum["mean_activation"] = activation;

@@ -2,7 +2,8 @@
 # Draws every saved Wang et al. 2009 walker (data/wang2009/walkers/) and the SIMBICON baseline: for
 # each, the HTML player of its first 10 s (orbit and follow camera, contact points, FSM state, the
 # objective's terms), filmstrips from the side (first 3 s) and the front (one gait cycle at 4 s), and
-# Fig. 6's gait-cycle plot over 100 s; then an index page that links them all.
+# Fig. 6's gait-cycle plot over 100 s (with the hip and ankle angles and a person's joints); then an
+# index page that links them all and a table of the standard scores against that person.
 #
 #   bash scripts/wang2009_views.sh [OUT]        # default OUT: out/wang2009_views
 #   bash scripts/wang2009_views.sh OUT --docs   # also copies the SVGs to docs/reproductions/wang2009/
@@ -59,3 +60,29 @@ done
   echo '</table></body></html>'
 } > "$out/index.html"
 echo "wrote $out/index.html" >&2
+
+# The standard scores against the adult of data/normative_gait/ (each walker's summary.json, 100 s
+# after the first 2), with the mean differences in brackets, as a Markdown table
+# (docs/reproductions/wang2009.md, "Against a person").
+if command -v python3 >/dev/null; then
+  python3 - "$out" "${names[@]}" > "$out/human_scores.md" <<'PY'
+import json, sys
+out, names = sys.argv[1], sys.argv[2:]
+keys = ["hip_flexion_angle", "knee_flexion_angle", "ankle_dorsiflexion_angle",
+        "hip_flexion_moment_per_kg", "knee_flexion_moment_per_kg",
+        "ankle_dorsiflexion_moment_per_kg"]
+print("| walker | hip | knee | ankle | hip moment | knee moment | ankle moment | pelvis, torso pitch (deg) | speed (m/s) |")
+print("| --- | --- | --- | --- | --- | --- | --- | --- | --- |")
+for n in names:
+    d = json.load(open(f"{out}/{n}/summary.json"))
+    s, m = d.get("standard_scores"), d.get("human_mean_differences")
+    if not s:
+        print(f"| `{n}` | no complete cycle | | | | | | | |")
+        continue
+    cells = [f"{s[k]:.1f} ({m[k]:+.1f})" if k.endswith("angle") else f"{s[k]:.0f} ({m[k]:+.2f})"
+             for k in keys]
+    pitch = f"{d['pelvis_pitch_deg']:.1f}, {d['torso_pitch_deg']:.1f}"
+    print(f"| `{n}` | " + " | ".join(cells) + f" | {pitch} | {d['speed']:.2f} |")
+PY
+  echo "wrote $out/human_scores.md" >&2
+fi
