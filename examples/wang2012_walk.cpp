@@ -56,6 +56,7 @@
 #include "command_line.hpp"
 #include "gaitsynth/actuators/musculotendon/leg_muscles.hpp"
 #include "gaitsynth/actuators/musculotendon_actuator.hpp"
+#include "gaitsynth/analysis/flight_phases.hpp"
 #include "gaitsynth/analysis/human_gait_comparison.hpp"
 #include "gaitsynth/analysis/muscle_recording.hpp"
 #include "gaitsynth/analysis/sagittal_gait_features.hpp"
@@ -483,6 +484,14 @@ int run_with(const cli& c, const floating_model& m, const std::vector<musculoten
   sum["human_mean_differences"] = differences;
   sum["gas"] = gas;
   sum["gait_features_deg"] = features;
+  // Sec. 6.3's runner has a flight phase in every cycle (analysis/flight_phases.hpp): the left
+  // leg's cycles after the first 2 s, flights of 0.02 s or more (the check records at 60 Hz).
+  const flight_phase_report flight = flight_phases(m, tr, {.t_begin = 2.0});
+  sum["flight"] = {{"cycles", flight.cycles},
+                   {"cycles_with_flight", flight.cycles_with_flight},
+                   {"every_cycle", flight.every_cycle()},
+                   {"mean_flight_s", flight.mean_flight},
+                   {"airborne_fraction", flight.airborne_fraction}};
   sum["mean_activation"] = activation;
   sum["evaluations"] = res.evaluations;
   sum["iterations"] = res.iterations;
