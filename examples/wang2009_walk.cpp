@@ -540,11 +540,12 @@ void set_weight(wang2009_weights& w, const std::string& name, double value) {
   const auto k = std::find(wang2009_term_names.begin(), wang2009_term_names.end(), name);
   check_argument(
       k != wang2009_term_names.end(), "unknown term '", name,
-      "' (E_user, E_vel, E_land, E_fail, E_sym, E_ang, E_head, E_power, E_ratio, E_posture)");
+      "' (E_user, E_vel, E_land, E_fail, E_sym, E_ang, E_head, E_power, E_ratio, E_posture, "
+      "E_pelvis)");
   check_argument(std::isfinite(value) && value >= 0.0, "weight of ", name,
                  " must be finite and >= 0, got ", value);
-  double* slot[] = {&w.user, &w.vel,  &w.land, &w.fail,  &w.sym,
-                    &w.ang,  &w.head, nullptr, &w.ratio, &w.posture};
+  double* slot[] = {&w.user, &w.vel,  &w.land,  &w.fail,    &w.sym,   &w.ang,
+                    &w.head, nullptr, &w.ratio, &w.posture, &w.pelvis};
   const auto i = static_cast<std::size_t>(k - wang2009_term_names.begin());
   if (slot[i])
     *slot[i] = value;

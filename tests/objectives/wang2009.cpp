@@ -411,6 +411,39 @@ TEST_CASE("wang2009: E_posture from the torso's tilt (ours)", "[objectives][wang
   CHECK(wang2009_term_names[wang2009_term::posture] == "E_posture");
   CHECK_THROWS_WITH(w9::torso_posture(m, {.eps_posture = -0.1}), Catch::Contains("eps_posture"));
   CHECK_THROWS_WITH(w9::torso_posture(m, {.body = "spine"}), Catch::Contains("spine"));
+  CHECK(posture.term_names() == std::array<std::string, 2>{"E_posture", "torso_tilt_rad"});
+}
+
+TEST_CASE("wang2009: E_pelvis, the same measure on the pelvis (ours)", "[objectives][wang2009]") {
+  const auto& m = humanoid();
+  synthetic s(m);
+  const int t = s.body("torso"), p = s.body("pelvis");
+  const auto obj = wang2009_objective(m);
+  const w9::torso_posture& pelvis = obj.part<wang2009_term::pelvis>();
+  const w9::torso_posture& torso = obj.part<wang2009_term::posture>();
+  CHECK(pelvis.body() == p);
+  CHECK(torso.body() == t);
+  CHECK(pelvis.term_names() == std::array<std::string, 2>{"E_pelvis", "pelvis_tilt_rad"});
+  CHECK(wang2009_term_names[wang2009_term::pelvis] == "E_pelvis");
+  CHECK(obj.weights()[wang2009_term::pelvis] == 0.0);  // eq. 16 as published unless set
+  // An upright torso over a pelvis tilted back 0.35 rad (the upright walkers' posture): E_posture
+  // is 0, E_pelvis Q(0.35; 0.15) = 0.35^2 on every step.
+  auto ap = pelvis.make_accumulator(m);
+  auto at = torso.make_accumulator(m);
+  for (int k = 0; k < 100; ++k) {
+    s.rot[p] = mat3(Eigen::AngleAxisd(-0.35, vec3::UnitY()));
+    s.rot[t] = mat3::Identity();
+    s.feed(pelvis, ap, k);
+    s.feed(torso, at, k);
+  }
+  const auto out = outcome(stop_reason::horizon, 1.0, 1.0);
+  CHECK(pelvis.finish(ap, out) == Approx(0.35 * 0.35));
+  CHECK(torso.finish(at, out) == 0.0);
+  wang2009_objective_options o;
+  o.weights.pelvis = 50.0;
+  CHECK(wang2009_objective(m, o).weights()[wang2009_term::pelvis] == 50.0);
+  o.weights.pelvis = -1.0;
+  CHECK_THROWS_WITH(wang2009_objective(m, o), Catch::Contains("w_pelvis"));
 }
 
 TEST_CASE("wang2009: E_power and the cost of transport (eq. 12)", "[objectives][wang2009]") {
@@ -528,11 +561,13 @@ TEST_CASE("wang2009: a standing rollout of the humanoid under the complete objec
   CHECK(r.cost >= 0.0);
   // Recorded terms: every term's running values, one column each.
   REQUIRE(tr.objective_term_names == obj.term_names());
-  const std::vector<std::string> names = {"E_user",      "speed_m_s", "step_length_m",   "E_vel",
-                                          "E_land",      "E_fail",    "E_sym",           "E_ang",
-                                          "L_z",         "E_head",    "head_vx_std_m_s", "E_power",
-                                          "tau_squared", "E_ratio",   "r_hip",           "r_knee",
-                                          "r_ankle",     "E_posture", "torso_tilt_rad"};
+  const std::vector<std::string> names = {"E_user",         "speed_m_s",       "step_length_m",
+                                          "E_vel",          "E_land",          "E_fail",
+                                          "E_sym",          "E_ang",           "L_z",
+                                          "E_head",         "head_vx_std_m_s", "E_power",
+                                          "tau_squared",    "E_ratio",         "r_hip",
+                                          "r_knee",         "r_ankle",         "E_posture",
+                                          "torso_tilt_rad", "E_pelvis",        "pelvis_tilt_rad"};
   CHECK(tr.objective_term_names == names);
   REQUIRE(tr.frames.size() >= 2);
   for (const auto& f : tr.frames)

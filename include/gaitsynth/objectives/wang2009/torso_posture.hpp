@@ -11,6 +11,11 @@
 /// the torso's PD targets does not stop it (the servos lag, and the optimizer uses the lag). This
 /// term measures the posture itself. Its weight in eq. 16 is 0 unless asked for
 /// (wang2009_weights::posture), so that eq. 16 stays the paper's.
+///
+/// The same measure on the pelvis is E_pelvis (options::body = "pelvis", term = "E_pelvis";
+/// wang2009_weights::pelvis): walkers held upright by E_posture alone tilt the pelvis back 11-20
+/// degrees and flex the back over it, so their hips read extended (docs/reproductions/
+/// wang2009.md, "Against a person").
 #include <array>
 #include <cmath>
 #include <cstdint>
@@ -31,7 +36,8 @@ struct torso_posture_options {
   /// rad: tilts up to this cost nothing (adults walk with the trunk within a few degrees of the
   /// vertical; 0.15 rad is 8.6 degrees).
   double eps_posture = 0.15;
-  std::string body = "torso";  ///< the torso body's name
+  std::string body = "torso";      ///< the torso body's name
+  std::string term = "E_posture";  ///< the term's name in the recorder (E_pelvis on the pelvis)
 };
 
 class torso_posture {
@@ -51,6 +57,7 @@ class torso_posture {
                    opt_.eps_posture);
     torso_ = m.body_index(opt_.body);
     cos_eps_ = std::cos(opt_.eps_posture);
+    names_ = {opt_.term, opt_.body + "_tilt_rad"};
   }
   const options& opts() const { return opt_; }
   int body() const { return torso_; }
@@ -77,8 +84,9 @@ class torso_posture {
     return T > 0 ? a.sum / static_cast<double>(T) : 0.0;
   }
 
-  /// Running values: E_posture and the torso's tilt this step (rad).
-  static std::array<std::string_view, 2> term_names() { return {"E_posture", "torso_tilt_rad"}; }
+  /// Running values: the term (options::term) and the body's tilt this step (rad), named
+  /// "<body>_tilt_rad".
+  const std::array<std::string, 2>& term_names() const { return names_; }
   void terms(const accumulator_type& a, std::span<double> out) const {
     out[0] = finish(a, a.track.outcome());
     out[1] = tilt(a.up);
@@ -88,6 +96,7 @@ class torso_posture {
   options opt_;
   int torso_ = -1;
   double cos_eps_ = 1.0;
+  std::array<std::string, 2> names_;
 };
 
 }  // namespace gaitsynth::wang2009

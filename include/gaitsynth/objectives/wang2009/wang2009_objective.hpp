@@ -14,8 +14,9 @@
 /// recorded), only not added. With no target speed the paper replaces E_power by the cost of
 /// transport E_power / v_x (Sec. 4.1); options::cost_of_transport overrides that choice.
 ///
-/// A tenth term, E_posture (torso_posture.hpp, ours), keeps the torso upright; its weight is 0
-/// unless set, so that eq. 16 is the paper's.
+/// A tenth term, E_posture (torso_posture.hpp, ours), keeps the torso upright, and an eleventh,
+/// E_pelvis (the same measure on the pelvis, ours), the pelvis; their weights are 0 unless set,
+/// so that eq. 16 is the paper's.
 #include <array>
 #include <cmath>
 #include <cstddef>
@@ -57,6 +58,7 @@ struct wang2009_weights {
   std::optional<double> power;  ///< unset: the paper's 1e-5 (70 kg / model mass)
   double ratio = 1.0;
   double posture = 0.0;  ///< E_posture, ours (torso_posture.hpp); 0: eq. 16 as published
+  double pelvis = 0.0;   ///< E_pelvis, ours (torso_posture.hpp on the pelvis); 0: as published
 };
 
 struct wang2009_objective_options {
@@ -73,16 +75,16 @@ struct wang2009_objective_options {
 using wang2009_objective_type =
     weighted_sum<wang2009::user_gait, wang2009::velocity, wang2009::landing, wang2009::failure,
                  wang2009::symmetry, wang2009::angular_momentum, wang2009::head, wang2009::power,
-                 wang2009::power_ratio, wang2009::torso_posture>;
+                 wang2009::power_ratio, wang2009::torso_posture, wang2009::torso_posture>;
 
 /// Part indices of wang2009_objective_type (obj.part<wang2009_term::ratio>()).
 struct wang2009_term {
   static constexpr std::size_t user = 0, vel = 1, land = 2, fail = 3, sym = 4, ang = 5, head = 6,
-                               power = 7, ratio = 8, posture = 9, count = 10;
+                               power = 7, ratio = 8, posture = 9, pelvis = 10, count = 11;
 };
 inline constexpr std::array<std::string_view, wang2009_term::count> wang2009_term_names{
-    "E_user", "E_vel",  "E_land",  "E_fail",  "E_sym",
-    "E_ang",  "E_head", "E_power", "E_ratio", "E_posture"};
+    "E_user", "E_vel",   "E_land",  "E_fail",    "E_sym",   "E_ang",
+    "E_head", "E_power", "E_ratio", "E_posture", "E_pelvis"};
 
 /// eq. 16 for model m (the Wang 2009 humanoid or any model with its foot bodies, head and leg
 /// DOF names). \throws std::invalid_argument naming a bad option, weight or missing name.
@@ -93,8 +95,9 @@ wang2009_objective_type wang2009_objective(const model<Root>& m,
   const double mass = m.total_mass();
   check_positive(mass, "wang2009_objective: model total mass (kg)");
   const std::array<double, wang2009_term::count> weights{
-      w.user,  w.vel,    w.land, w.fail, w.sym, w.ang, w.head, w.power.value_or(1e-5 * 70.0 / mass),
-      w.ratio, w.posture};
+      w.user,  w.vel,     w.land,  w.fail,
+      w.sym,   w.ang,     w.head,  w.power.value_or(1e-5 * 70.0 / mass),
+      w.ratio, w.posture, w.pelvis};
   for (std::size_t i = 0; i < weights.size(); ++i)
     check_argument(std::isfinite(weights[i]) && weights[i] >= 0.0, "wang2009_objective: weight w_",
                    wang2009_term_names[i].substr(2), " must be finite and >= 0, got ", weights[i]);
@@ -109,7 +112,8 @@ wang2009_objective_type wang2009_objective(const model<Root>& m,
       wang2009::angular_momentum(m, {.speed = o.target_speed, .height = o.height}),
       wang2009::head(m),
       wang2009::power({.cost_of_transport = o.cost_of_transport.value_or(!o.target_speed)}),
-      wang2009::power_ratio(m), wang2009::torso_posture(m));
+      wang2009::power_ratio(m), wang2009::torso_posture(m),
+      wang2009::torso_posture(m, {.body = "pelvis", .term = "E_pelvis"}));
 }
 
 /// One row of the report: a term's value, its weight and their product.
