@@ -60,6 +60,7 @@
 #include "gaitsynth/analysis/ankle_push_off.hpp"
 #include "gaitsynth/analysis/arm_swing.hpp"
 #include "gaitsynth/analysis/human_gait_comparison.hpp"
+#include "gaitsynth/analysis/leg_overlap.hpp"
 #include "gaitsynth/analysis/torso_lean.hpp"
 #include "gaitsynth/controllers/fsm/simbicon.hpp"
 #include "gaitsynth/controllers/fsm/wang2009_json.hpp"
@@ -325,6 +326,15 @@ void add_human_comparison(nlohmann::json& sum, const floating_model& m, const tr
   }
 }
 
+/// How far one leg passes through the other after the first 2 s (analysis/leg_overlap.hpp: the
+/// humanoid's legs do not collide with each other in the simulation).
+nlohmann::json leg_overlap_summary(const floating_model& m, const trajectory& tr) {
+  const leg_overlap_report o = leg_overlap(m, tr, leg_capsule_pairs(m), 2.0);
+  return {{"max_depth_m", o.max_depth},
+          {"overlapping_fraction", o.overlapping_fraction},
+          {"worst_time", o.worst_time}};
+}
+
 /// The torso's lean (analysis/torso_lean.hpp) after the first 2 s, degrees: its mean world
 /// sagittal angle (positive leaning forward) and the largest tilt from the vertical; the pelvis's
 /// mean world sagittal angle.
@@ -383,6 +393,7 @@ int run_simbicon(const floating_model& m, const cli& c) {
   sum["arm_swing"] = arm_swing_summary(m, tr);
   add_torso_lean(sum, m, tr);
   add_human_comparison(sum, m, tr);
+  sum["leg_overlap"] = leg_overlap_summary(m, tr);
   example_cli::report_summary(sum, c.out);
   return 0;
 }
@@ -508,6 +519,7 @@ int optimize_and_check(const floating_model& m, const cli& c, const wang2009_con
   sum["arm_swing"] = arm_swing_summary(m, tr);
   add_torso_lean(sum, m, tr);
   add_human_comparison(sum, m, tr);
+  sum["leg_overlap"] = leg_overlap_summary(m, tr);
   sum["horizon"] = c.horizon;
   sum["without"] = c.without;
   sum["weights"] = c.weights;

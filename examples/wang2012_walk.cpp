@@ -58,6 +58,7 @@
 #include "gaitsynth/actuators/musculotendon_actuator.hpp"
 #include "gaitsynth/analysis/flight_phases.hpp"
 #include "gaitsynth/analysis/human_gait_comparison.hpp"
+#include "gaitsynth/analysis/leg_overlap.hpp"
 #include "gaitsynth/analysis/muscle_recording.hpp"
 #include "gaitsynth/analysis/sagittal_gait_features.hpp"
 #include "gaitsynth/controllers/reflex/wang2012_json.hpp"
@@ -487,6 +488,11 @@ int run_with(const cli& c, const floating_model& m, const std::vector<musculoten
   // Sec. 6.3's runner has a flight phase in every cycle (analysis/flight_phases.hpp): the left
   // leg's cycles after the first 2 s, flights of 0.02 s or more (the check records at 60 Hz).
   const flight_phase_report flight = flight_phases(m, tr, {.t_begin = 2.0});
+  // The legs do not collide in the simulation (analysis/leg_overlap.hpp): how far they overlap.
+  const leg_overlap_report overlap = leg_overlap(m, tr, leg_capsule_pairs(m), 2.0);
+  sum["leg_overlap"] = {{"max_depth_m", overlap.max_depth},
+                        {"overlapping_fraction", overlap.overlapping_fraction},
+                        {"worst_time", overlap.worst_time}};
   sum["flight"] = {{"cycles", flight.cycles},
                    {"cycles_with_flight", flight.cycles_with_flight},
                    {"every_cycle", flight.every_cycle()},

@@ -1,0 +1,103 @@
+#pragma once
+/// \file analysis/leg_overlap.hpp
+/// Whether a recorded walk passes one leg through the other. The Wang 2009 and 2012 humanoids
+/// simulate without collisions between their own bodies (only Wu's legs collide,
+/// contact/self_contact.hpp), so nothing stops a walker from crossing its legs through each other,
+/// a gait no body can walk; this measures how far it does:
+///
+///   const leg_overlap_report o = leg_overlap(m, tr, leg_capsule_pairs(m), 2.0);
+///   o.max_depth;            // m: the deepest overlap of any pair in any frame
+///   o.overlapping_fraction; // of the frames, those in which some pair overlaps
+///
+/// Per pair and frame the depth is r_a + r_b - d, d the distance between the capsules' segments
+/// (contact/self_contact.hpp's closest points) in the recorded body poses; it overlaps when > 0.
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "gaitsynth/contact/self_contact.hpp"
+#include "gaitsynth/error.hpp"
+#include "gaitsynth/model/model.hpp"
+#include "gaitsynth/rollout/trajectory.hpp"
+
+namespace gaitsynth {
+
+struct leg_overlap_report {
+  int frames = 0;                     ///< frames from t_begin on
+  double max_depth = 0.0;             ///< m, deepest overlap (0: none)
+  double overlapping_fraction = 0.0;  ///< of the frames, those with a pair overlapping
+  int worst_pair = -1;                ///< index of the deepest pair (-1: none overlaps)
+  double worst_time = 0.0;            ///< s, when it was deepest
+};
+
+/// The left leg's capsules against the right's, from the bodies' capsule shapes: thigh against
+/// lower leg, lower leg against thigh, and the lower legs (3 pairs; the 30-DOF humanoids' thighs
+/// and shins, Wu's biped's thighs and shanks). Not the thighs against each other: their capsules
+/// start at the hip joints, closer together than their radii, so they overlap by 1.4 cm even
+/// standing (a person's thighs meet there too). \throws std::invalid_argument naming a missing
+/// body or a body without a capsule shape.
+template <root_joint Root>
+std::vector<self_collision_pair> leg_capsule_pairs(const model<Root>& m,
+                                                   const std::string& upper = "thigh",
+                                                   const std::string& lower = "shin") {
+  const auto capsule_of = [&](const std::string& name) -> collision_capsule {
+    const int b = m.body_index(name);  // throws naming a missing body
+    for (const shape& s : m.bodies[static_cast<std::size_t>(b)].shapes)
+      if (s.type == shape::kind::capsule) return {b, s.p0, s.p1, s.radius};
+    throw std::invalid_argument("leg_capsule_pairs: body '" + name + "' of model '" + m.name +
+                                "' has no capsule shape");
+  };
+  return {{capsule_of("l" + upper), capsule_of("r" + lower)},
+          {capsule_of("l" + lower), capsule_of("r" + upper)},
+          {capsule_of("l" + lower), capsule_of("r" + lower)}};
+}
+
+/// The overlap of `pairs` over the frames of tr (recorded with body poses) from t_begin (s) on.
+/// \throws std::invalid_argument for pairs validate() refuses, a frame without body poses (naming
+/// it) or a non-finite t_begin.
+template <root_joint Root>
+leg_overlap_report leg_overlap(const model<Root>& m, const trajectory& tr,
+                               std::span<const self_collision_pair> pairs, double t_begin = 0.0) {
+  check_argument(std::isfinite(t_begin), "leg_overlap: t_begin is not finite");
+  self_contact_parameters check;
+  check.pairs.assign(pairs.begin(), pairs.end());
+  validate(m, check);
+  const auto nb = static_cast<std::size_t>(m.num_bodies());
+  leg_overlap_report r;
+  int overlapping = 0;
+  for (const trajectory_frame& f : tr.frames) {
+    if (f.t < t_begin) continue;
+    check_argument(f.body_position.size() == nb && f.body_orientation.size() == nb,
+                   "leg_overlap: the frame at t = ", f.t, " has ", f.body_position.size(),
+                   " body poses, model '", m.name, "' has ", nb, " bodies (record body poses)");
+    ++r.frames;
+    bool any = false;
+    for (std::size_t i = 0; i < pairs.size(); ++i) {
+      const auto world = [&](const collision_capsule& c, const vec3& x) -> vec3 {
+        const auto b = static_cast<std::size_t>(c.body);
+        return f.body_position[b] + f.body_orientation[b].normalized() * x;
+      };
+      const self_collision_pair& q = pairs[i];
+      const vec3 a0 = world(q.a, q.a.p0), a1 = world(q.a, q.a.p1);
+      const vec3 b0 = world(q.b, q.b.p0), b1 = world(q.b, q.b.p1);
+      const auto [s, t] = closest_segment_parameters(a0, a1, b0, b1);
+      const double depth =
+          q.a.radius + q.b.radius - ((b0 + t * (b1 - b0)) - (a0 + s * (a1 - a0))).norm();
+      if (depth <= 0.0) continue;
+      any = true;
+      if (depth > r.max_depth) {
+        r.max_depth = depth;
+        r.worst_pair = static_cast<int>(i);
+        r.worst_time = f.t;
+      }
+    }
+    overlapping += any;
+  }
+  if (r.frames > 0) r.overlapping_fraction = static_cast<double>(overlapping) / r.frames;
+  return r;
+}
+
+}  // namespace gaitsynth
