@@ -329,9 +329,11 @@ void add_human_comparison(nlohmann::json& sum, const floating_model& m, const tr
 /// How far one leg passes through the other after the first 2 s (analysis/leg_overlap.hpp: the
 /// humanoid's legs do not collide with each other in the simulation).
 nlohmann::json leg_overlap_summary(const floating_model& m, const trajectory& tr) {
-  const leg_overlap_report o = leg_overlap(m, tr, leg_capsule_pairs(m), 2.0);
+  const std::vector<self_collision_pair> pairs = leg_capsule_pairs(m);
+  const leg_overlap_report o = leg_overlap(m, tr, pairs, 2.0);
   return {{"max_depth_m", o.max_depth},
           {"overlapping_fraction", o.overlapping_fraction},
+          {"worst_pair", leg_overlap_pair_name(m, pairs, o.worst_pair)},
           {"worst_time", o.worst_time}};
 }
 

@@ -489,9 +489,11 @@ int run_with(const cli& c, const floating_model& m, const std::vector<musculoten
   // leg's cycles after the first 2 s, flights of 0.02 s or more (the check records at 60 Hz).
   const flight_phase_report flight = flight_phases(m, tr, {.t_begin = 2.0});
   // The legs do not collide in the simulation (analysis/leg_overlap.hpp): how far they overlap.
-  const leg_overlap_report overlap = leg_overlap(m, tr, leg_capsule_pairs(m), 2.0);
+  const std::vector<self_collision_pair> leg_pairs = leg_capsule_pairs(m);
+  const leg_overlap_report overlap = leg_overlap(m, tr, leg_pairs, 2.0);
   sum["leg_overlap"] = {{"max_depth_m", overlap.max_depth},
                         {"overlapping_fraction", overlap.overlapping_fraction},
+                        {"worst_pair", leg_overlap_pair_name(m, leg_pairs, overlap.worst_pair)},
                         {"worst_time", overlap.worst_time}};
   sum["flight"] = {{"cycles", flight.cycles},
                    {"cycles_with_flight", flight.cycles_with_flight},

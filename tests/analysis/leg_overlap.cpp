@@ -96,6 +96,10 @@ TEST_CASE("leg_overlap: the humanoid's legs apart when standing, overlapping whe
   CHECK(crossed.overlapping_fraction == 0.5);
   CHECK(crossed.worst_time == 0.1);
   CHECK(crossed.worst_pair == 2);  // the shins
+  CHECK(leg_overlap_pair_name(m, pairs, crossed.worst_pair) == "lshin-rshin");
+  CHECK(leg_overlap_pair_name(m, pairs, 0) == "lthigh-rshin");
+  CHECK(leg_overlap_pair_name(m, pairs, -1).empty());
+  CHECK_THROWS_WITH(leg_overlap_pair_name(m, pairs, 3), Contains("pair 3 of 3"));
 }
 
 TEST_CASE("leg_overlap: bad input is refused by name", "[analysis][bad_input]") {

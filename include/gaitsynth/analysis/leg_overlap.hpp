@@ -55,6 +55,19 @@ std::vector<self_collision_pair> leg_capsule_pairs(const model<Root>& m,
           {capsule_of("l" + lower), capsule_of("r" + lower)}};
 }
 
+/// "<body a>-<body b>" of pairs[i] ("lshin-rshin"); "" for i = -1 (leg_overlap_report's
+/// worst_pair when nothing overlaps). \throws std::invalid_argument for another index.
+template <root_joint Root>
+std::string leg_overlap_pair_name(const model<Root>& m, std::span<const self_collision_pair> pairs,
+                                  int i) {
+  if (i == -1) return "";
+  check_argument(i >= 0 && static_cast<std::size_t>(i) < pairs.size(),
+                 "leg_overlap_pair_name: pair ", i, " of ", pairs.size());
+  const self_collision_pair& q = pairs[static_cast<std::size_t>(i)];
+  return m.bodies[static_cast<std::size_t>(q.a.body)].name + "-" +
+         m.bodies[static_cast<std::size_t>(q.b.body)].name;
+}
+
 /// The overlap of `pairs` over the frames of tr (recorded with body poses) from t_begin (s) on.
 /// \throws std::invalid_argument for pairs validate() refuses, a frame without body poses (naming
 /// it) or a non-finite t_begin.
