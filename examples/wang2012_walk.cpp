@@ -13,8 +13,10 @@
 //                 [--push-direction-step D] [--push-period S] [--push-phase fixed|random]
 //                 [--effort metabolic|torque|activation]
 //                 [--weaken MTU=F]... [--gait walk|run] [--muscle-svg FILE [--muscle MTU]]
+//                 [--leg-collisions off|on]
 //   wang2012_walk --resume DIR [--threads N]
-//   wang2012_walk --replay FILE [--check-seconds S] [--check-pushes N] [--out DIR]
+//   wang2012_walk --replay FILE [--check-seconds S] [--check-pushes N] [--leg-collisions off|on]
+//                 [--out DIR]
 //
 // --robust-starts K (beyond the paper, as wang2009_walk's) adds K rollouts per candidate from
 // starts whose joint velocities are perturbed by a seeded N(0, start_sigma^2), the same for every
@@ -37,6 +39,12 @@
 // and a replay uses them unless told otherwise. --gait run starts from Sec. 6.3's running
 // controller instead of the walking one; --iterations 0 checks the initial controller without
 // optimizing it.
+//
+// --leg-collisions on (ours; default off, as the saved walkers were made): the left thigh and
+// shin collide with the right shin and the right thigh and shin with the left shin
+// (contact/self_contact.hpp's leg_capsule_pairs), so a walker can no longer swing one shin through
+// the other, as most of the saved ones do (analysis/leg_overlap.hpp, the summary's leg_overlap).
+// A saved controller records it as "leg_collisions" and a replay follows it unless told.
 //
 // Every form takes the viewer flags (--html FILE, --filmstrip FILE, --csv FILE, ...) for the
 // check rollout. Writes DIR/wang2012_walk.controller.json, .convergence.csv, .checkpoint, .csv
@@ -95,8 +103,10 @@ struct cli {
   double push_force = 100.0;     // N (Sec. 6.4)
   int push_direction_step = -1;  // -1: robust_pushes (robust_variant_options::push_direction_step)
   double push_period = 3.0;      // s between the training pushes' starts
-  std::string push_phase = "fixed";  // fixed: first push at 2 s; random: redrawn per iteration
-  double check_pushes = 0.0;         // N: the check's 40 s push protocol (0: none)
+  std::string push_phase = "fixed";    // fixed: first push at 2 s; random: redrawn per iteration
+  double check_pushes = 0.0;           // N: the check's 40 s push protocol (0: none)
+  std::string leg_collisions = "off";  // on: the legs collide (ours; the saved walkers: off)
+  bool leg_collisions_given = false;
   double check_seconds = 20.0;
   double horizon = 10.0;  // s, "not falling down for 10 seconds"
   double sigma = 0.005;   // Sec. 5
@@ -186,8 +196,13 @@ cli parse(int argc, char** argv) {
                  "and fiber length over the gait cycle as SVG");
   app.add_option("--muscle", c.muscle, "the MTU --muscle-svg draws (left leg; Figure 5: GAS)")
       ->check(CLI::IsMember({"GLU", "HFL", "VAS", "TA", "SOL", "HAM", "RF", "GAS"}));
+  app.add_option("--leg-collisions", c.leg_collisions,
+                 "on: the thighs and shins of the two legs collide (ours; off: they pass through "
+                 "each other, as the saved walkers were made; a replay follows the saved one)")
+      ->check(CLI::IsMember({"off", "on"}));
   example_cli::add_viewer_flags(app, c.viz);
   example_cli::parse(app, argc, argv);
+  c.leg_collisions_given = app.count("--leg-collisions") > 0;
   if (!resume.empty()) {
     example_cli::reparse_recorded(app, argv[0], resume, {"threads"});
     out = resume;
@@ -250,6 +265,7 @@ int run_with(const cli& c, const floating_model& m, const std::vector<musculoten
   for (const auto& [t, w] : c.weights) set_weight(oo.weights, t, w);
   const auto obj = wang2012::objective(m, units, std::move(j_m), oo);
   rollout_options opt = wang2009_rollout_options(m);  // 2400 Hz, the Wang 2009 contact
+  if (c.leg_collisions == "on") opt.self_contact.pairs = leg_capsule_pairs(m);
   const rollout_problem prob{m, act, ctrl, obj, flat_terrain{}, semi_implicit_euler{}, opt};
   const std::string stem = (c.out / "wang2012_walk").string();
   Eigen::VectorXd best = Eigen::Map<const Eigen::VectorXd>(x0.data(), std::ssize(x0));
@@ -264,6 +280,7 @@ int run_with(const cli& c, const floating_model& m, const std::vector<musculoten
     s.info["weights"] = c.weights;
     s.info["effort"] = c.effort;
     if (!c.weaken.empty()) s.info["weaken"] = c.weaken;
+    if (c.leg_collisions == "on") s.info["leg_collisions"] = true;
     save_wang2012_controller(stem + suffix, s);
   };
   // CMA-ES on `problem`'s cost at the horizon (the paper's problem, or one with robust variants).
@@ -491,6 +508,7 @@ int run_with(const cli& c, const floating_model& m, const std::vector<musculoten
   // The legs do not collide in the simulation (analysis/leg_overlap.hpp): how far they overlap.
   const std::vector<self_collision_pair> leg_pairs = leg_capsule_pairs(m);
   const leg_overlap_report overlap = leg_overlap(m, tr, leg_pairs, 2.0);
+  sum["leg_collisions"] = c.leg_collisions == "on";
   sum["leg_overlap"] = {{"max_depth_m", overlap.max_depth},
                         {"overlapping_fraction", overlap.overlapping_fraction},
                         {"worst_pair", leg_overlap_pair_name(m, leg_pairs, overlap.worst_pair)},
@@ -523,6 +541,7 @@ int run(cli c) {
       if (c.weights.empty()) c.weights = s.info.value("weights", std::map<std::string, double>{});
       if (c.effort.empty()) c.effort = s.info.value("effort", std::string());
       if (c.weaken.empty()) c.weaken = s.info.value("weaken", std::map<std::string, double>{});
+      if (!c.leg_collisions_given && s.info.value("leg_collisions", false)) c.leg_collisions = "on";
     }
   }
   if (c.effort.empty()) c.effort = "metabolic";

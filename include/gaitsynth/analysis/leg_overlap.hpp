@@ -9,7 +9,8 @@
 ///   o.max_depth;            // m: the deepest overlap of any pair in any frame
 ///   o.overlapping_fraction; // of the frames, those in which some pair overlaps
 ///
-/// Per pair and frame the depth is r_a + r_b - d, d the distance between the capsules' segments
+/// The usual pairs: contact/self_contact.hpp's leg_capsule_pairs(m). Per pair and frame the
+/// depth is r_a + r_b - d, d the distance between the capsules' segments
 /// (contact/self_contact.hpp's closest points) in the recorded body poses; it overlaps when > 0.
 #include <algorithm>
 #include <cmath>
@@ -32,28 +33,6 @@ struct leg_overlap_report {
   int worst_pair = -1;                ///< index of the deepest pair (-1: none overlaps)
   double worst_time = 0.0;            ///< s, when it was deepest
 };
-
-/// The left leg's capsules against the right's, from the bodies' capsule shapes: thigh against
-/// lower leg, lower leg against thigh, and the lower legs (3 pairs; the 30-DOF humanoids' thighs
-/// and shins, Wu's biped's thighs and shanks). Not the thighs against each other: their capsules
-/// start at the hip joints, closer together than their radii, so they overlap by 1.4 cm even
-/// standing (a person's thighs meet there too). \throws std::invalid_argument naming a missing
-/// body or a body without a capsule shape.
-template <root_joint Root>
-std::vector<self_collision_pair> leg_capsule_pairs(const model<Root>& m,
-                                                   const std::string& upper = "thigh",
-                                                   const std::string& lower = "shin") {
-  const auto capsule_of = [&](const std::string& name) -> collision_capsule {
-    const int b = m.body_index(name);  // throws naming a missing body
-    for (const shape& s : m.bodies[static_cast<std::size_t>(b)].shapes)
-      if (s.type == shape::kind::capsule) return {b, s.p0, s.p1, s.radius};
-    throw std::invalid_argument("leg_capsule_pairs: body '" + name + "' of model '" + m.name +
-                                "' has no capsule shape");
-  };
-  return {{capsule_of("l" + upper), capsule_of("r" + lower)},
-          {capsule_of("l" + lower), capsule_of("r" + upper)},
-          {capsule_of("l" + lower), capsule_of("r" + lower)}};
-}
 
 /// "<body a>-<body b>" of pairs[i] ("lshin-rshin"); "" for i = -1 (leg_overlap_report's
 /// worst_pair when nothing overlaps). \throws std::invalid_argument for another index.

@@ -13,6 +13,8 @@
 ///   f_n        max(0, kp depth - kd n . (v_b(p) - v_a(p)))     (frictionless: ours)
 ///   body b gets f_n n at p, body a gets -f_n n at p
 /// Both forces act along one line, so a pair never changes the total linear or angular momentum.
+/// leg_capsule_pairs(m) gives the legs' pairs of the 30-DOF humanoids from their capsule shapes
+/// (wu2010_leg_collisions, models/wu2010.hpp, Wu's biped's).
 /// Segments that cross (d = 0) push along the normal of the plane of the two segments (or any
 /// direction normal to a when they are parallel, or z when a is a point).
 #include <Eigen/Core>
@@ -98,6 +100,28 @@ void validate(const model<Root>& m, const self_contact_parameters& p) {
     check_argument(q.a.body != q.b.body, "self-collision pair ", i, ": both capsules are on body ",
                    q.a.body);
   }
+}
+
+/// The left leg's capsules against the right's, from the bodies' capsule shapes: thigh against
+/// lower leg, lower leg against thigh, and the lower legs (3 pairs; the 30-DOF humanoids' thighs
+/// and shins, Wu's biped's thighs and shanks). Not the thighs against each other: their capsules
+/// start at the hip joints, closer together than their radii, so they overlap by 1.4 cm even
+/// standing (a person's thighs meet there too). \throws std::invalid_argument naming a missing
+/// body or a body without a capsule shape.
+template <root_joint Root>
+std::vector<self_collision_pair> leg_capsule_pairs(const model<Root>& m,
+                                                   const std::string& upper = "thigh",
+                                                   const std::string& lower = "shin") {
+  const auto capsule_of = [&](const std::string& name) -> collision_capsule {
+    const int b = m.body_index(name);  // throws naming a missing body
+    for (const shape& s : m.bodies[static_cast<std::size_t>(b)].shapes)
+      if (s.type == shape::kind::capsule) return {b, s.p0, s.p1, s.radius};
+    throw std::invalid_argument("leg_capsule_pairs: body '" + name + "' of model '" + m.name +
+                                "' has no capsule shape");
+  };
+  return {{capsule_of("l" + upper), capsule_of("r" + lower)},
+          {capsule_of("l" + lower), capsule_of("r" + upper)},
+          {capsule_of("l" + lower), capsule_of("r" + lower)}};
 }
 
 /// Adds every touching pair's forces to ws.f_ext (accumulates: clear_external_wrenches first) and
