@@ -250,6 +250,22 @@ TEST_CASE("wang2009: the late push-off walker walks 100 s and pushes off at 70-8
                 0.7});
 }
 
+// One more stage from it with E_pelvis (ours, the pelvis's tilt) weighted 10 as well (session 28):
+// the pelvis stays tilted back (-15 degrees against -17) but the plantarflexors' power now peaks
+// at 80-90 % of stance, a person's tenth, on both ankles, with the human ratio.
+TEST_CASE("wang2009: the 80-90 % push-off walker walks 100 s and pushes off at 80-90 % of stance",
+          "[wang2009][claim]") {
+  check_walker({"stocky_push_off_80.controller.json",
+                1.822,
+                0.241,
+                {0.429, 0.051, 0.520},
+                10,
+                {true, true},
+                true,
+                -4.5,
+                0.8});
+}
+
 // The upright walker asked for 0.6 m steps at once (1000 iterations): longer steps, the ratio
 // and a nearly upright torso kept.
 TEST_CASE("wang2009: the upright walker with longer steps walks 100 s", "[wang2009][claim]") {
