@@ -21,6 +21,7 @@
 
 #include "gaitsynth/actuators/musculotendon/leg_muscles.hpp"
 #include "gaitsynth/actuators/musculotendon_actuator.hpp"
+#include "gaitsynth/analysis/leg_overlap.hpp"
 #include "gaitsynth/analysis/muscle_recording.hpp"
 #include "gaitsynth/analysis/sagittal_gait_features.hpp"
 #include "gaitsynth/analysis/standard_score.hpp"
@@ -44,6 +45,9 @@ struct reported {
   double speed;          ///< m/s, average over the 100 s walk
   bool speed_on_target;  ///< claimed: within 0.05 m/s of the saved target speed
   int perturbed_walked;  ///< of the 10 perturbed starts, those that walk 100 s
+  /// Claimed: the legs collide (saved "leg_collisions") and over the 100 s walk no pair of
+  /// analysis/leg_overlap.hpp overlaps deeper than 1 cm (the penalty contact's give).
+  bool legs_apart = false;
 };
 
 /// A saved walker ready to re-simulate: the model, the saved controller, the muscles it was
@@ -114,6 +118,10 @@ void check_walker(const reported& w) {
   const std::span<const double> p = walker.parameters();
   const wang2012_saved_controller& saved = walker.saved;
   rollout_options opt = wang2009_rollout_options(m);  // as examples/wang2012_walk.cpp
+  // The legs collide when the walker was optimized so (wang2012_walk --leg-collisions on).
+  const bool legs_collide = saved.info.value("leg_collisions", false);
+  CHECK(legs_collide == w.legs_apart);
+  if (legs_collide) opt.self_contact.pairs = leg_capsule_pairs(m);
   auto scratch = make_rollout_scratch(m);
 #ifdef GAITSYNTH_SANITIZED_BUILD
   const rollout_result r10 = rollout(m, act, c, distance_objective(), flat_terrain{},
@@ -123,12 +131,19 @@ void check_walker(const reported& w) {
 #endif
   opt.duration = 100.0;
   opt = walk_options(opt);
+  trajectory tr;
+  if (w.legs_apart) {
+    opt.record = &tr;
+    opt.record_every = 40;
+  }
   const walk_check r = judge_walk(rollout(m, act, c, distance_objective(), flat_terrain{},
                                           semi_implicit_euler{}, p, opt, scratch));
+  opt.record = nullptr;
   INFO(w.file << ": " << verdict(r) << " after " << r.seconds << " s at " << r.average_speed
               << " m/s");
   REQUIRE(r.walked);
   CHECK(r.average_speed == Approx(w.speed).epsilon(0.03));
+  if (w.legs_apart) CHECK(leg_overlap(m, tr, leg_capsule_pairs(m), 2.0).max_depth <= 0.01);
   if (w.speed_on_target) CHECK(std::abs(r.average_speed - saved.target_speed) <= 0.05);
   int walking = 0, k = 0;
   for (const Eigen::VectorXd& dv : joint_velocity_perturbations(m, 10, 0.05, 2012)) {
@@ -156,6 +171,19 @@ TEST_CASE("wang2012: nwalk walks 100 s at 1.25 m/s, from 10 of 10 perturbed star
                 .speed = 1.2284,
                 .speed_on_target = true,
                 .perturbed_walked = 10});
+}
+
+// nwalk re-optimized with colliding legs (wang2012_walk --leg-collisions on, ours): the saved
+// nwalk swings a shin through the other and falls within 2 s once they collide.
+TEST_CASE(
+    "wang2012: nwalk with colliding legs walks 100 s at 1.25 m/s, legs apart, 10 of 10 "
+    "perturbed starts",
+    "[wang2012][claim]") {
+  check_walker({.file = "nwalk_legs.controller.json",
+                .speed = 1.2374,
+                .speed_on_target = true,
+                .perturbed_walked = 10,
+                .legs_apart = true});
 }
 
 TEST_CASE("wang2012: fwalk walks 100 s at 1.5 m/s, from 10 of 10 perturbed starts",
