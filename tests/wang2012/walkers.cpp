@@ -194,6 +194,18 @@ TEST_CASE("wang2012: fwalk walks 100 s at 1.5 m/s, from 10 of 10 perturbed start
                 .perturbed_walked = 10});
 }
 
+// fwalk re-optimized with colliding legs (one stage of 20 iterations with two perturbed starts).
+TEST_CASE(
+    "wang2012: fwalk with colliding legs walks 100 s at 1.5 m/s, legs apart, 8 of 10 "
+    "perturbed starts",
+    "[wang2012][claim]") {
+  check_walker({.file = "fwalk_legs.controller.json",
+                .speed = 1.5013,
+                .speed_on_target = true,
+                .perturbed_walked = 8,
+                .legs_apart = true});
+}
+
 TEST_CASE("wang2012: swalk walks 100 s at 1.0 m/s, from 10 of 10 perturbed starts",
           "[wang2012][claim]") {
   check_walker({.file = "swalk.controller.json",
