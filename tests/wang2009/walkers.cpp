@@ -48,6 +48,8 @@ struct reported {
   /// Where both ankles' mean power curves peak, as a fraction of stance (the start of the peak
   /// tenth), at least, when the page claims it.
   std::optional<double> push_off_peak_from = std::nullopt;
+  /// The pelvis's mean world pitch after 2 s, degrees, when the page reports it (within 1.5).
+  std::optional<double> pelvis_pitch_deg = std::nullopt;
 };
 
 template <class Terrain>
@@ -104,6 +106,9 @@ void check_walker_on(const reported& w, const Terrain& ground) {
   if (w.torso_pitch_deg)
     CHECK(torso_lean(m, tr, 2.0).mean_pitch * 180.0 / std::numbers::pi ==
           Approx(*w.torso_pitch_deg).margin(1.5));
+  if (w.pelvis_pitch_deg)
+    CHECK(torso_lean(m, tr, 2.0, "pelvis").mean_pitch * 180.0 / std::numbers::pi ==
+          Approx(*w.pelvis_pitch_deg).margin(1.5));
   for (int side = 0; side < 2; ++side) {
     const std::string s = side == 0 ? "l" : "r";
     const ankle_push_off_report a = ankle_push_off(m, tr, s + "ankle_y", s + "foot", s + "toes");
@@ -264,6 +269,22 @@ TEST_CASE("wang2009: the 80-90 % push-off walker walks 100 s and pushes off at 8
                 true,
                 -4.5,
                 0.8});
+}
+
+// And one more with E_pelvis weighted 100 (60 iterations): the pelvis within 8 degrees of level
+// (-7.7, from -15.3), the torso upright, the push-off still at 80-90 % with less before it.
+TEST_CASE("wang2009: the 80-90 % push-off walker with a levelled pelvis walks 100 s",
+          "[wang2009][claim]") {
+  check_walker({"stocky_push_off_80_pelvis.controller.json",
+                1.884,
+                0.237,
+                {0.427, 0.046, 0.527},
+                10,
+                {true, true},
+                true,
+                -0.4,
+                0.8,
+                -7.7});
 }
 
 // The upright walker asked for 0.6 m steps at once (1000 iterations): longer steps, the ratio
