@@ -100,6 +100,7 @@ case "$mode" in
           --push-direction-step 8
         expect 2 "--push-period: must be in .*, got 0" -- "$exe" --push-period 0
         expect 2 "--push-phase: sometimes not in \{fixed,random\}" -- "$exe" --push-phase sometimes
+        expect 2 "--leg-collisions: maybe not in \{off,on\}" -- "$exe" --leg-collisions maybe
         expect 1 "no MTU named 'QUAD'" -- "$exe" --weaken QUAD=0.5 --iterations 0 --horizon 0.01 \
           --check-seconds 0.01 --out "${TMPDIR:-/tmp}/gaitsynth_cli_weaken"
         expect 1 "factor for 'GAS' must be finite and > 0, got 0" -- "$exe" --weaken GAS=0 \
