@@ -13,10 +13,11 @@
 ///   f_n        max(0, kp depth - kd n . (v_b(p) - v_a(p)))     (frictionless: ours)
 ///   body b gets f_n n at p, body a gets -f_n n at p
 /// Both forces act along one line, so a pair never changes the total linear or angular momentum.
-/// leg_capsule_pairs(m) gives the legs' pairs of the 30-DOF humanoids from their capsule shapes
-/// (wu2010_leg_collisions, models/wu2010.hpp, Wu's biped's).
 /// Segments that cross (d = 0) push along the normal of the plane of the two segments (or any
 /// direction normal to a when they are parallel, or z when a is a point).
+///
+/// leg_capsule_pairs(m) gives the 30-DOF humanoids' leg pairs from their capsule shapes (Wu's
+/// biped has its own, wu2010_leg_collisions in models/wu2010.hpp).
 #include <Eigen/Core>
 #include <algorithm>
 #include <cmath>
