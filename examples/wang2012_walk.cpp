@@ -36,7 +36,8 @@
 // summary's pushes_survived). --effort picks J_M: the metabolic energy, or the ablations min_torque
 // (w_M = 5) and min_act (w_M = 60000) of Sec. 6.2. --weaken GAS=0.25 scales both GAS units' F_max
 // (the weakened muscles of Sec. 6.2). A saved controller records its effort, weights and weakness,
-// and a replay uses them unless told otherwise. --gait run starts from Sec. 6.3's running
+// and a replay uses them unless told otherwise; --init keeps its weakness and colliding legs (the
+// body) unless told, not its effort or weights. --gait run starts from Sec. 6.3's running
 // controller instead of the walking one; --iterations 0 checks the initial controller without
 // optimizing it.
 //
@@ -44,7 +45,7 @@
 // shin collide with the right shin and the right thigh and shin with the left shin
 // (contact/self_contact.hpp's leg_capsule_pairs), so a walker can no longer swing one shin through
 // the other, as most of the saved ones do (analysis/leg_overlap.hpp, the summary's leg_overlap).
-// A saved controller records it as "leg_collisions" and a replay follows it unless told.
+// A saved controller records it as "leg_collisions"; a replay and --init follow it unless told.
 //
 // Every form takes the viewer flags (--html FILE, --filmstrip FILE, --csv FILE, ...) for the
 // check rollout. Writes DIR/wang2012_walk.controller.json, .convergence.csv, .checkpoint, .csv
@@ -187,7 +188,8 @@ cli parse(int argc, char** argv) {
   std::vector<std::string> weaken;
   app.add_option("--weaken", weaken,
                  "MTU=F: the MTU's F_max times F in both legs (GAS, SOL, HAM, VAS, ...; Sec. 6.2; "
-                 "repeatable)")
+                 "repeatable; a replay's or --init's default: the saved weakness, which "
+                 "--weaken MTU=1 undoes)")
       ->check(example_cli::name_equals_number());
   app.add_option("--start-sigma", c.start_sigma, "joint-velocity perturbation of those, rad/s")
       ->check(example_cli::in_range(0.0, 10.0));
@@ -198,7 +200,8 @@ cli parse(int argc, char** argv) {
       ->check(CLI::IsMember({"GLU", "HFL", "VAS", "TA", "SOL", "HAM", "RF", "GAS"}));
   app.add_option("--leg-collisions", c.leg_collisions,
                  "on: the thighs and shins of the two legs collide (ours; off: they pass through "
-                 "each other, as the saved walkers were made; a replay follows the saved one)")
+                 "each other, as the saved walkers were made; a replay or --init follows the saved "
+                 "one)")
       ->check(CLI::IsMember({"off", "on"}));
   example_cli::add_viewer_flags(app, c.viz);
   example_cli::parse(app, argc, argv);
@@ -535,13 +538,16 @@ int run(cli c) {
     const wang2012_saved_controller s =
         load_wang2012_controller(c.replay.empty() ? c.init : c.replay);
     x0 = s.parameters;
+    // The body it was made for comes along with --init too (a continuation that silently dropped
+    // a weakness or the colliding legs would optimize another character); the problem (speed,
+    // weights, effort) does not, as each stage states its own.
+    if (c.weaken.empty()) c.weaken = s.info.value("weaken", std::map<std::string, double>{});
+    if (!c.leg_collisions_given && s.info.value("leg_collisions", false)) c.leg_collisions = "on";
     if (!c.replay.empty()) {
       // A replay is judged by the problem it was optimized for, unless told otherwise.
       speed = s.target_speed;
       if (c.weights.empty()) c.weights = s.info.value("weights", std::map<std::string, double>{});
       if (c.effort.empty()) c.effort = s.info.value("effort", std::string());
-      if (c.weaken.empty()) c.weaken = s.info.value("weaken", std::map<std::string, double>{});
-      if (!c.leg_collisions_given && s.info.value("leg_collisions", false)) c.leg_collisions = "on";
     }
   }
   if (c.effort.empty()) c.effort = "metabolic";

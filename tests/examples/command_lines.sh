@@ -16,6 +16,11 @@
 #                                        takes the weight and lists the continuation with its
 #                                        iteration, the saved controller records the weight, and a
 #                                        second --resume keeps it
+#   command_lines.sh init_body EXE DIR INIT FLAGS...
+#                                        wang2012_walk --init INIT FLAGS: the saved controller
+#                                        keeps INIT's weakness and colliding legs (the body it was
+#                                        made for); with --weaken HAM=1 --leg-collisions off too it
+#                                        takes those instead
 #   command_lines.sh resume EXE DIR STEM WAIT_FOR FLAGS... -- OTHER_FLAGS...
 #                                        EXE killed (SIGKILL) after its first checkpoint, then 3
 #                                        times at seeded random moments while resuming, and
@@ -239,6 +244,34 @@ print(o["options"]["helper-weight"], [e["from_iteration"] for e in o.get("contin
         echo "ok: options.json records revision $rev"
       else
         echo "FAIL: options.json records revision '$rev', the source tree is at $head"; fail=1
+      fi
+    fi
+    ;;
+  init_body)
+    exe=$1 dir=$2 init=$3
+    shift 3
+    body() {  # a controller file's weakness and colliding legs
+      python3 -c 'import json, sys
+i = json.load(open(sys.argv[1]))["info"]
+print(json.dumps(i.get("weaken", {}), sort_keys=True), i.get("leg_collisions", False))' "$1"
+    }
+    want=$(body "$init")
+    rm -rf "$dir"
+    if runs "$exe" --init "$init" "$@" --out "$dir/kept"; then
+      got=$(body "$dir/kept/wang2012_walk.controller.json")
+      if [[ "$got" == "$want" ]]; then
+        echo "ok: --init keeps the body: $got"
+      else
+        echo "FAIL: --init $init: the saved body is '$got', the init's '$want'"; fail=1
+      fi
+    fi
+    if runs "$exe" --init "$init" "$@" --weaken HAM=1 --leg-collisions off --out "$dir/told"; then
+      got=$(body "$dir/told/wang2012_walk.controller.json")
+      if [[ "$got" == '{"HAM": 1.0} False' ]]; then
+        echo "ok: --weaken and --leg-collisions override the init's body: $got"
+      else
+        echo "FAIL: --init $init --weaken HAM=1 --leg-collisions off: the saved body is '$got'"
+        fail=1
       fi
     fi
     ;;
