@@ -10,10 +10,11 @@
 // Pinned frames (Sec. 6.3) leave the QP and are counted apart. Then, per foot, the net force of
 // the residual over its unpinned frames (what the joints left out, as opposed to forces between
 // the frames of one rigid foot, which cancel) and of the clipped helper; why a standing foot's
-// frames were not pinned; and how often each joint's torque sits at its bound. STANCE_TARGET=
-// first_contact in the environment replays with that stance target instead of the saved one;
-// PIN_BY=link in
-// the environment replays with lower_level_options::pin_by = link instead of the saved
+// frames were not pinned; by tenth of the half-cycle, how often the standing foot touches nothing
+// and the swinging foot touches, and how fast the swinging frames' targets move (when in the
+// half-cycle the walk leaves its plan); and how often each joint's torque sits at its bound.
+// STANCE_TARGET=first_contact in the environment replays with that stance target instead of the
+// saved one; PIN_BY=link with lower_level_options::pin_by = link instead of the saved
 // controller's contact test. Compile against the tree's include/:
 //
 //   g++ -std=c++20 -O2 -DNDEBUG -Iinclude -isystem /usr/include/eigen3
@@ -22,6 +23,7 @@
 //
 // (one command line each).
 #include <Eigen/QR>
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdio>
@@ -63,6 +65,12 @@ struct residuals {
   /// Per action frame while its foot stands and it is not pinned: commands whose geometry did not
   /// touch, whose frame was eps_p or more from its target, whose target moved eps_pdot or faster.
   std::vector<std::array<long, 3>> why;
+  /// Per tenth of the half-cycle (s_h): standing-foot commands, those whose foot touched nothing,
+  /// and those whose swinging foot touched (when in the half-cycle the walker leaves its plan).
+  std::array<std::array<long, 3>, 10> by_tenth{};
+  double t_h = 0.55;
+  std::array<double, 10> swing_speed{};  ///< summed |target velocity| of the swinging frames
+  std::array<long, 10> swing_far{}, swing_n{};
   double eps_p = 0.2, eps_pdot = 0.05;
   pin_contact pin_by = pin_contact::frame_geometry;
   long commands = 0;
@@ -134,6 +142,26 @@ struct residuals {
       y[1] += (st.lower.desired.position[j] - st.lower.current.position[j]).norm() >= eps_p;
       y[2] += st.lower.desired.velocity[j].norm() >= eps_pdot;
     }
+    {
+      const auto foot_touches = [&](int link) {
+        for (const action_frame& o : L->action)
+          if (o.link == link && frame_touches(o, ob.contact_active)) return true;
+        return false;
+      };
+      const int tenth =
+          std::clamp(static_cast<int>(10.0 * (ob.t - st.half_cycle_start) / t_h), 0, 9);
+      auto& b = by_tenth[static_cast<std::size_t>(tenth)];
+      ++b[0];
+      b[1] += !foot_touches(stance_link);
+      b[2] += foot_touches(3 - stance_link);
+      for (int j = 0; j < L->num_action(); ++j) {
+        if (L->action[static_cast<std::size_t>(j)].link != 3 - stance_link) continue;
+        swing_speed[static_cast<std::size_t>(tenth)] += st.lower.desired.velocity[j].norm();
+        swing_far[static_cast<std::size_t>(tenth)] +=
+            (st.lower.desired.position[j] - st.lower.current.position[j]).norm() >= eps_p;
+        ++swing_n[static_cast<std::size_t>(tenth)];
+      }
+    }
     bool stance_pinned = true;
     for (int j = 0; j < N; ++j)
       if (L->action[static_cast<std::size_t>(j)].link == stance_link)
@@ -190,6 +218,7 @@ int main(int argc, char** argv) try {
   res.pin_by = po.lower.pin_by;
   res.eps_p = po.lower.eps_p;
   res.eps_pdot = po.lower.eps_pdot;
+  res.t_h = c.half_cycle_duration();
   res.tau_max.resize(m.num_joint_dofs());
   for (int j = 0; j < m.num_joint_dofs(); ++j) res.tau_max[j] = m.dofs[j].torque_limit;
   auto scratch = make_rollout_scratch(m);
@@ -240,6 +269,20 @@ int main(int argc, char** argv) try {
                 c.layout().action[static_cast<std::size_t>(j)].name.c_str(),
                 static_cast<double>(y[0]) / n, static_cast<double>(y[1]) / n,
                 static_cast<double>(y[2]) / n);
+  }
+  std::printf(
+      "by tenth of the half-cycle: share of the commands whose standing foot touches nothing, "
+      "whose swinging foot touches\n");
+  for (int k = 0; k < 10; ++k) {
+    const auto& b = res.by_tenth[static_cast<std::size_t>(k)];
+    const double n = static_cast<double>(std::max(b[0], 1L));
+    const double ns = static_cast<double>(std::max(res.swing_n[static_cast<std::size_t>(k)], 1L));
+    std::printf(
+        "  %3d-%3d %%  %.2f %.2f   swinging frames: mean |target v| %.3f m/s, %.2f eps_p or "
+        "more from the target\n",
+        10 * k, 10 * k + 10, static_cast<double>(b[1]) / n, static_cast<double>(b[2]) / n,
+        res.swing_speed[static_cast<std::size_t>(k)] / ns,
+        static_cast<double>(res.swing_far[static_cast<std::size_t>(k)]) / ns);
   }
   std::printf("share of commands with the QP's torque at its bound:\n");
   for (int j = 0; j < m.num_joint_dofs(); ++j)
