@@ -226,6 +226,18 @@ TEST_CASE("wang2012: swalk walks 100 s at 1.0 m/s, from 10 of 10 perturbed start
                 .perturbed_walked = 10});
 }
 
+// swalk re-optimized with colliding legs: a stage as fwalk_legs, then swalk's own 30 s stage.
+TEST_CASE(
+    "wang2012: swalk with colliding legs walks 100 s at 1.0 m/s, legs apart, 10 of 10 "
+    "perturbed starts",
+    "[wang2012][claim]") {
+  check_walker({.file = "swalk_legs.controller.json",
+                .speed = 0.9981,
+                .speed_on_target = true,
+                .perturbed_walked = 10,
+                .legs_apart = true});
+}
+
 TEST_CASE("wang2012: vwalk walks 100 s at 1.75 m/s, from 10 of 10 perturbed starts",
           "[wang2012][claim]") {
   check_walker({.file = "vwalk.controller.json",
@@ -299,6 +311,18 @@ TEST_CASE("wang2012: HAM at 1/4 strength walks 100 s at 1.25 m/s, from 9 of 10 p
                 .perturbed_walked = 9});
 }
 
+// weak_ham re-optimized with colliding legs (one stage of 20 iterations, as fwalk_legs).
+TEST_CASE(
+    "wang2012: HAM at 1/4 strength with colliding legs walks 100 s at 1.25 m/s, legs apart, 10 of "
+    "10 perturbed starts",
+    "[wang2012][claim]") {
+  check_walker({.file = "weak_ham_legs.controller.json",
+                .speed = 1.2761,
+                .speed_on_target = true,
+                .perturbed_walked = 10,
+                .legs_apart = true});
+}
+
 TEST_CASE(
     "wang2012: GAS and SOL at 1/4 strength walk 100 s at 1.25 m/s, from 8 of 10 perturbed starts",
     "[wang2012][claim]") {
@@ -306,6 +330,18 @@ TEST_CASE(
                 .speed = 1.2702,
                 .speed_on_target = true,
                 .perturbed_walked = 8});
+}
+
+// weak_gassol re-optimized with colliding legs (one stage of 20 iterations, as fwalk_legs).
+TEST_CASE(
+    "wang2012: GAS and SOL at 1/4 strength with colliding legs walk 100 s at 1.25 m/s, legs "
+    "apart, 9 of 10 perturbed starts",
+    "[wang2012][claim]") {
+  check_walker({.file = "weak_gassol_legs.controller.json",
+                .speed = 1.2946,
+                .speed_on_target = true,
+                .perturbed_walked = 9,
+                .legs_apart = true});
 }
 
 TEST_CASE("wang2012: VAS at 1/10 strength walks 100 s (at 0.95 m/s), from 8 of 10 perturbed starts",
