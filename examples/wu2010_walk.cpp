@@ -19,7 +19,7 @@
 //               [--horizon S] [--flat] [--fall-penalty W] [--check-seconds S]
 //               [--controller-rate HZ] [--sigma S] [--cost-timestep S]
 //               [--stance-target planned_landing|touchdown|first_contact]
-//               [--pin-by frame_geometry|link]
+//               [--pin-by frame_geometry|link] [--half-cycle fixed|touchdown]
 //               [--no-helper]
 //               [--divergence fall|infinite] [--robust-starts K] [--start-sigma S]
 //               [--leg-collisions on|off] [--task f|b|l|r|s] [--h-max-cap N]
@@ -67,6 +67,11 @@
 // Stance target (--stance-target, ours; default the paper's planned_landing): touchdown re-targets
 // the stance foot to where it landed once the previous swing's tail is over, first_contact from
 // its first ground contact, tail or not (planned_walk_options::stance_target).
+//
+// Half-cycle timing (--half-cycle, ours; default the paper's fixed t_h): touchdown ends a
+// half-cycle t_h or more after it began, once the swing foot touches the ground (at most 0.3 s
+// later), so that the new stance foot stands as its half-cycle starts
+// (planned_walk_options::timing). A saved controller records it; a replay follows it.
 //
 // --pin-by (Sec. 6.3's contact test, ours to choose: the paper says "the geometry to which a
 // stationary action frame is attached"; default frame_geometry, the frame's own box): link pins
@@ -208,6 +213,8 @@ struct cli {
   double sigma = 0.3;            // Sec. 8.3, on the [0, 1] scale
   bool controller_rate_given = false;
   std::string stance_target = "planned_landing";  // planned_walk_options::stance_target
+  std::string half_cycle = "fixed";               // planned_walk_options::timing
+  bool half_cycle_given = false;
   double cost_timestep = wu2010::paper_timestep;  // s; 0: eq. 6 summed per physics step
   bool no_helper = false;
   std::string divergence = "fall";  // rollout_options::score_divergence (ours)
@@ -280,6 +287,11 @@ cli parse(int argc, char** argv) {
                  "first_contact (ours: from its first contact, tail or not); a saved "
                  "controller's own when replaying")
       ->check(CLI::IsMember({"planned_landing", "touchdown", "first_contact"}));
+  app.add_option("--half-cycle", c.half_cycle,
+                 "when a half-cycle ends: fixed (the paper: every t_h) or touchdown (ours: t_h or "
+                 "more after it began, once the swing foot touches); a saved controller's own "
+                 "when replaying")
+      ->check(CLI::IsMember({"fixed", "touchdown"}));
   app.add_option("--pin-by", c.pin_by,
                  "Sec. 6.3's contact test for pinning a stationary frame: its own geometry "
                  "(frame_geometry: the heel box for the heel frame) or any of its foot's (link); "
@@ -341,6 +353,7 @@ cli parse(int argc, char** argv) {
   example_cli::parse(app, argc, argv);
   c.controller_rate_given = app.count("--controller-rate") > 0;
   c.stance_target_given = app.count("--stance-target") > 0;
+  c.half_cycle_given = app.count("--half-cycle") > 0;
   c.pin_by_given = app.count("--pin-by") > 0;
   c.terrain_blind_given = app.count("--terrain-blind") > 0;
   c.leg_collisions_given = app.count("--leg-collisions") > 0;
@@ -501,6 +514,7 @@ int run(const cli& c) {
                      : c.stance_target == "first_contact" ? stance_foot_target::first_contact
                                                           : stance_foot_target::planned_landing;
   po.lower.pin_by = c.pin_by == "link" ? pin_contact::link : pin_contact::frame_geometry;
+  po.timing = c.half_cycle == "touchdown" ? half_cycle_end::touchdown : half_cycle_end::fixed;
   if (!from.empty()) {
     const planned_walk_saved s = load_planned_walk(from);
     const planned_walk_options saved = saved_planned_walk_options(s, from, po);  // validates
@@ -508,6 +522,7 @@ int run(const cli& c) {
       rate = s.info["controller_rate"].get<double>();
     if (!c.stance_target_given) po.stance_target = saved.stance_target;
     if (!c.pin_by_given) po.lower.pin_by = saved.lower.pin_by;
+    if (!c.half_cycle_given) po.timing = saved.timing;
     if (!c.terrain_blind_given && s.info.contains("terrain_blind") &&
         s.info["terrain_blind"].is_boolean())
       terrain_blind = s.info["terrain_blind"].get<bool>();
@@ -548,6 +563,7 @@ int run(const cli& c) {
                                         ? "first_contact"
                                         : "planned_landing";
   const std::string pin_by = po.lower.pin_by == pin_contact::link ? "link" : "frame_geometry";
+  const std::string half_cycle = po.timing == half_cycle_end::touchdown ? "touchdown" : "fixed";
   const walk_controller ctrl(m, ground, po);
   const std::vector<std::string> names = ctrl.parameter_names();
 
@@ -646,6 +662,7 @@ int run(const cli& c) {
       info["controller_rate"] = rate;
       info["stance_target"] = stance_target;
       info["pin_by"] = pin_by;
+      info["half_cycle_timing"] = half_cycle;
       info["terrain_blind"] = terrain_blind;
       info["leg_collisions"] = legs;
       info["implicit_damping"] = implicit;
@@ -827,6 +844,7 @@ int run(const cli& c) {
   sum["controller_rate"] = rate;
   sum["stance_target"] = stance_target;
   sum["pin_by"] = pin_by;
+  sum["half_cycle_timing"] = half_cycle;
   sum["body"] = c.body;
   sum["cost_timestep"] = c.cost_timestep;
   sum["h_max"] = h_max;

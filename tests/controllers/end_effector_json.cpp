@@ -57,6 +57,7 @@ TEST_CASE("planned_walk JSON: a round trip is exact and values are matched by na
   info["stance_target"] = "touchdown";
   info["helper_force"] = true;
   info["pin_by"] = "link";
+  info["half_cycle_timing"] = "touchdown";
   const fs::path p = scratch_file("round_trip.json");
   save_planned_walk(p, names, x, info);
   const planned_walk_saved s = load_planned_walk(p);
@@ -75,9 +76,11 @@ TEST_CASE("planned_walk JSON: a round trip is exact and values are matched by na
   CHECK(r.stance_target == stance_foot_target::touchdown);
   CHECK(r.helper_force);
   CHECK(r.lower.pin_by == pin_contact::link);
-  // A file from before "pin_by" keeps the default contact test.
+  CHECK(r.timing == half_cycle_end::touchdown);
+  // A file from before "pin_by" ("half_cycle_timing") keeps the default contact test (timing).
   CHECK(saved_planned_walk_options(planned_walk_saved{}, p).lower.pin_by ==
         pin_contact::frame_geometry);
+  CHECK(saved_planned_walk_options(planned_walk_saved{}, p).timing == half_cycle_end::fixed);
   // A file of the plain controller gives a helper controller's h_max from its "h_max" entry.
   nlohmann::ordered_json info2;
   info2["h_max"] = 7.5;
@@ -203,6 +206,8 @@ TEST_CASE("planned_walk JSON: malformed files are refused, named",
              Catch::Contains("helper_force must be true or false"));
   CHECK_THAT(option_error("pin_by", "toe"),
              Catch::Contains("o.json: pin_by must be") && Catch::Contains("\"toe\""));
+  CHECK_THAT(option_error("half_cycle_timing", "early"),
+             Catch::Contains("o.json: half_cycle_timing must be") && Catch::Contains("\"early\""));
   CHECK_THAT(option_error("symmetry", "lopsided"),
              Catch::Contains("o.json: symmetry must be") && Catch::Contains("\"lopsided\""));
   // A size mismatch on saving.

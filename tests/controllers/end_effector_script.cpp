@@ -163,4 +163,8 @@ TEST_CASE("walk_script refuses what cannot be chained, naming it",
   o.period = 1.0 / 600.0;
   CHECK_THROWS_WITH(S({forward(m), planned_walk<>(m, flat_terrain{}, o)}, {{0, 0}}),
                     Catch::Contains("controller 1's period"));
+  o = {};
+  o.timing = half_cycle_end::touchdown;  // the script runs on the clock
+  CHECK_THROWS_WITH(S({forward(m), planned_walk<>(m, flat_terrain{}, o)}, {{0, 0}}),
+                    Catch::Contains("controller 1 ends its half-cycles on touchdown"));
 }

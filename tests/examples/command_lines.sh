@@ -76,6 +76,7 @@ case "$mode" in
         expect 2 "--stance-target: sideways not in \{planned_landing,touchdown,first_contact\}" -- \
           "$exe" --stance-target sideways
         expect 2 "--pin-by: heel not in \{frame_geometry,link\}" -- "$exe" --pin-by heel
+        expect 2 "--half-cycle: early not in \{fixed,touchdown\}" -- "$exe" --half-cycle early
         expect 2 "--implicit-damping: yes not in \{on,off\}" -- "$exe" --implicit-damping yes
         expect 2 "--divergence: nan not in \{fall,infinite\}" -- "$exe" --divergence nan
         expect 2 "--cost-timestep: must be in .*, got -1" -- "$exe" --cost-timestep -1

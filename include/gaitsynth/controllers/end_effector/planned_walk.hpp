@@ -16,7 +16,10 @@
 /// no previous plan: its stance foot stays where it stands and psi_f' is the upper body's yaw.
 /// options.stance_target = touchdown (ours) re-targets the stance foot, at its first ground contact
 /// after the tail, to where it is (half_cycle_plan.hpp's touchdown_stance_target) instead of the
-/// previous swing's planned end.
+/// previous swing's planned end. options.timing = touchdown (ours) ends a half-cycle at the first
+/// command t_h or more after it began at which the swing foot touches the ground (at the latest
+/// max_touchdown_wait after t_h), and the next one begins then, so that the new stance foot stands
+/// when its half-cycle starts (docs/reproductions/wu2010.md, "When in the half-cycle ...").
 ///
 /// Terrain: a controller sees no terrain through sensors (controllers/sensors.hpp), so it holds a
 /// copy of one, given at construction (template parameter T, default flat_terrain). It must be
@@ -82,6 +85,12 @@ enum class stance_foot_target {
   first_contact,
 };
 
+/// When a half-cycle ends (appendix A.1).
+enum class half_cycle_end {
+  fixed,      ///< the paper: half-cycle k starts at t_0 + k t_h
+  touchdown,  ///< ours: t_h or more after it began, once the swing foot touches (or a wait ran out)
+};
+
 /// How Omega_1 and Pi_1 relate to Omega_0 and Pi_0.
 enum class planned_walk_symmetry {
   asymmetric,        ///< Omega_0, Omega_1, Pi_0, Pi_1 all free (74 parameters)
@@ -128,6 +137,9 @@ struct planned_walk_options {
   /// touchdown (ours) re-targets it, at its first ground contact after t_e', to where it landed;
   /// first_contact (ours) at its first ground contact in the half-cycle, tail or not.
   stance_foot_target stance_target = stance_foot_target::planned_landing;
+  half_cycle_end timing = half_cycle_end::fixed;
+  /// timing touchdown: s after t_h that a half-cycle waits for its swing foot to touch (>= 0).
+  double max_touchdown_wait = 0.3;
   lower_level_options lower{};
   tracking_weights tracking{};  ///< Sec. 8.1's tracking report (Sec. 8.3's weights)
   /// Sec. 8.2: append h_max to the parameters and apply the helper force (off: the paper's
@@ -149,8 +161,8 @@ class planned_walk {
     int current = -1;                      ///< index of the current plan in plans; -1: none yet
     std::int64_t half_cycle = -1;          ///< k of the current half-cycle; -1 before the first
     double start_time = 0.0;               ///< t_0: time of the first command, s
-    double half_cycle_start = 0.0;         ///< t_0 + k t_h, s
-    double last_plan_time = 0.0;           ///< sensed time of the command that planned, s
+    double half_cycle_start = 0.0;  ///< t_0 + k t_h, s (timing touchdown: when k was planned)
+    double last_plan_time = 0.0;    ///< sensed time of the command that planned, s
     stance_side stance = stance_side::left;
     bool stance_anchored = false;  ///< stance_target touchdown: the foot has touched down
     link_target stance_anchor;     ///< and this is its target since
@@ -196,6 +208,9 @@ class planned_walk {
                    "planned_walk: first_stance must be left or right, got none");
     check_argument(opt_.period < opt_.setup.t_h, "planned_walk: period (", opt_.period,
                    " s) must be shorter than the half-cycle t_h (", opt_.setup.t_h, " s)");
+    check_argument(std::isfinite(opt_.max_touchdown_wait) && opt_.max_touchdown_wait >= 0.0,
+                   "planned_walk: max_touchdown_wait must be finite and >= 0, got ",
+                   opt_.max_touchdown_wait);
     const lower_level_options& l = opt_.lower;
     check_argument(
         std::isfinite(l.eps_p) && l.eps_p >= 0.0 && std::isfinite(l.eps_pdot) && l.eps_pdot >= 0.0,
@@ -315,9 +330,10 @@ class planned_walk {
   const T& ground() const { return terrain_; }
   const end_effector_layout& layout() const { return layout_; }
   double half_cycle_duration() const { return opt_.setup.t_h; }
-  /// The half-cycle k that a command at time t falls in: k starts at t_0 + k t_h, t_0 the time
-  /// of the first command (state_type::start_time; t itself before the first command). The
-  /// 1e-9 s slack keeps a command sensed at t_0 + k t_h minus rounding in half-cycle k.
+  /// The half-cycle k that a command at time t falls in with timing fixed: k starts at
+  /// t_0 + k t_h, t_0 the time of the first command (state_type::start_time; t itself before the
+  /// first command). The 1e-9 s slack keeps a command sensed at t_0 + k t_h minus rounding in
+  /// half-cycle k.
   std::int64_t half_cycle_at(double t, const state_type& st) const {
     const double t0 = st.half_cycle < 0 ? t : st.start_time;
     const double t_h = opt_.setup.t_h;
@@ -401,7 +417,9 @@ class planned_walk {
       st.helper.setZero();
       return;
     }
-    const std::int64_t k = half_cycle_at(s.t, st);
+    const std::int64_t k = opt_.timing == half_cycle_end::touchdown && st.half_cycle >= 0
+                               ? half_cycle_on_touchdown(s, st)
+                               : half_cycle_at(s.t, st);
     if (st.half_cycle < 0) st.start_time = s.t;
     if (k != st.half_cycle) plan(s, st, k < 0 ? 0 : k);
     const half_cycle_plan& p = st.plans[static_cast<std::size_t>(st.current)];
@@ -440,7 +458,9 @@ class planned_walk {
         goal, omega_[static_cast<std::size_t>(k % 2)], opt_.setup, in, terrain_, previous);
     st.current = next;
     st.half_cycle = k;
-    st.half_cycle_start = st.start_time + static_cast<double>(k) * opt_.setup.t_h;
+    st.half_cycle_start = opt_.timing == half_cycle_end::touchdown
+                              ? s.t
+                              : st.start_time + static_cast<double>(k) * opt_.setup.t_h;
     st.last_plan_time = s.t;
     st.stance = stance;
     st.stance_anchored = false;
@@ -450,6 +470,18 @@ class planned_walk {
     st.report[report_layout_.half_cycle] = static_cast<double>(k);
     st.report[report_layout_.com_target] = s.com.x() + r * std::cos(psi_m);
     st.report[report_layout_.com_target + 1] = s.com.y() + r * std::sin(psi_m);
+  }
+
+  /// timing touchdown: the next half-cycle once t_h has passed (1e-9 s slack) and a contact point
+  /// of the swing foot touches, or max_touchdown_wait after that; else the current one.
+  std::int64_t half_cycle_on_touchdown(const sensors<Root>& s, const state_type& st) const {
+    const double elapsed = s.t - st.half_cycle_start, t_h = opt_.setup.t_h;
+    if (elapsed < t_h - 1e-9) return st.half_cycle;
+    if (elapsed >= t_h + opt_.max_touchdown_wait - 1e-9) return st.half_cycle + 1;
+    const int swing = st.stance == stance_side::left ? 2 : 1;
+    for (const action_frame& a : layout_.action)
+      if (a.link == swing && frame_touches(a, s.contact_active)) return st.half_cycle + 1;
+    return st.half_cycle;
   }
 
   /// stance_target touchdown: once the previous swing's tail is over (t >= t_e') and a contact

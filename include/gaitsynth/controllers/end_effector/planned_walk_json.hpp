@@ -159,7 +159,7 @@ inline std::vector<double> planned_walk_values(const planned_walk_saved& s,
 
 /// `base` with what the file records about how the controller ran: "controller_rate" (Hz, 0:
 /// every physics step) as the period, "stance_target" ("planned_landing", "touchdown" or
-/// "first_contact"),
+/// "first_contact"), "half_cycle_timing" ("fixed" or "touchdown"),
 /// "helper_force", "symmetry" and "pin_by" (Sec. 6.3's contact test: "frame_geometry" or "link").
 /// Entries the file lacks leave base's values; a malformed one throws, named.
 inline planned_walk_options saved_planned_walk_options(const planned_walk_saved& s,
@@ -185,6 +185,15 @@ inline planned_walk_options saved_planned_walk_options(const planned_walk_saved&
       base.stance_target = stance_foot_target::first_contact;
     else
       fail("stance_target", v, "\"planned_landing\", \"touchdown\" or \"first_contact\"");
+  }
+  if (s.info.contains("half_cycle_timing")) {
+    const nlohmann::json& v = s.info["half_cycle_timing"];
+    if (v == "fixed")
+      base.timing = half_cycle_end::fixed;
+    else if (v == "touchdown")
+      base.timing = half_cycle_end::touchdown;
+    else
+      fail("half_cycle_timing", v, "\"fixed\" or \"touchdown\"");
   }
   if (s.info.contains("symmetry")) {
     const nlohmann::json& v = s.info["symmetry"];

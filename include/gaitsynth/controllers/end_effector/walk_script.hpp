@@ -64,6 +64,12 @@ class walk_script {
     check_argument(free_ >= -1 && free_ < n, "walk_script: free_controller must be -1 or below ", n,
                    ", got ", free_);
     const walk& a = controllers_[0];
+    // The script switches controllers on the clock (half_cycle_at), as the paper's demo does.
+    for (int c = 0; c < n; ++c)
+      check_argument(
+          controllers_[static_cast<std::size_t>(c)].opts().timing == half_cycle_end::fixed,
+          "walk_script: controller ", c,
+          " ends its half-cycles on touchdown; a script needs fixed timing");
     for (int c = 1; c < n; ++c) {
       const walk& b = controllers_[static_cast<std::size_t>(c)];
       check_argument(b.half_cycle_duration() == a.half_cycle_duration(), "walk_script: controller ",
