@@ -422,21 +422,29 @@ struct stance_log {
   }
 };
 
+/// The default parameters' first `duration` s from the neutral pose on flat ground, falls not
+/// stopped, observed by `log`.
+template <class Log>
+rollout_result walk_default(const floating_model& m, const planned_walk<>& c, double duration,
+                            Log& log) {
+  rollout_options ro;
+  ro.duration = duration;
+  ro.detect_falls = false;
+  ro.initial_state = make_state(m);
+  place_on_terrain(m, flat_terrain{}, ro.initial_state.q);
+  auto scratch = make_rollout_scratch(m);
+  return rollout(m, torque_actuator{}, c, distance_objective(), flat_terrain{},
+                 semi_implicit_euler(), c.default_parameters(), ro, scratch, log);
+}
+
 /// The default parameters' first 1.1 s (falls not stopped) with stance target `target`, logged.
 stance_log stance_walk(const floating_model& m, stance_foot_target target) {
   planned_walk_options o;
   o.stance_target = target;
   const planned_walk<> c(m, flat_terrain{}, o);
-  rollout_options ro;
-  ro.duration = 1.1;
-  ro.detect_falls = false;
-  ro.initial_state = make_state(m);
-  place_on_terrain(m, flat_terrain{}, ro.initial_state.q);
-  auto scratch = make_rollout_scratch(m);
   stance_log log;
   log.layout = &c.layout();
-  (void)rollout(m, torque_actuator{}, c, distance_objective(), flat_terrain{},
-                semi_implicit_euler(), c.default_parameters(), ro, scratch, log);
+  (void)walk_default(m, c, 1.1, log);
   log.layout = nullptr;  // c's layout ends here
   return log;
 }
@@ -545,20 +553,13 @@ TEST_CASE("planned_walk: timing touchdown ends a half-cycle when the swing foot 
   o.timing = half_cycle_end::touchdown;
   o.max_touchdown_wait = 0.2;
   const planned_walk<> c(m, flat_terrain{}, o);
-  rollout_options ro;
-  // The default parameters fall at 1.2 s; the timing runs on regardless until the fallen biped's
-  // state diverges (at 1.77 s).
-  ro.duration = 1.7;
-  ro.detect_falls = false;
-  ro.initial_state = make_state(m);
-  place_on_terrain(m, flat_terrain{}, ro.initial_state.q);
-  auto scratch = make_rollout_scratch(m);
   touchdown_timing_log log;
   log.layout = &c.layout();
   log.t_h = c.half_cycle_duration();
   log.wait = o.max_touchdown_wait;
-  const rollout_result r = rollout(m, torque_actuator{}, c, distance_objective(), flat_terrain{},
-                                   semi_implicit_euler(), c.default_parameters(), ro, scratch, log);
+  // The default parameters fall at 1.2 s; the timing runs on regardless until the fallen biped's
+  // state diverges (at 1.77 s).
+  const rollout_result r = walk_default(m, c, 1.7, log);
   log.layout = nullptr;
   REQUIRE(r.reason == stop_reason::horizon);
   INFO(log.switches << " switches: " << log.on_touch << " on touchdown, " << log.on_wait
