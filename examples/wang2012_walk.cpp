@@ -386,10 +386,12 @@ int run_with(const cli& c, const floating_model& m, const std::vector<musculoten
   go.channels = human_comparison_channels("l", m.total_mass());
   go.samples = 100;
   std::vector<gait_reference> references;
+  std::vector<double> scored_cycle_starts;
   nlohmann::json scores = nlohmann::json::object(), differences = nlohmann::json::object(),
                  features = nlohmann::json::object();
   if (!tr.frames.empty() && tr.frames.back().t > 4.0) {
     const human_gait_comparison hc = compare_with_human(m, tr, human);
+    if (hc.cycles.num_cycles() >= 1) scored_cycle_starts = hc.cycles.cycle_starts;
     for (std::size_t k = 0; k < hc.labels.size(); ++k) {
       const normative_curve& h = human.curve(hc.labels[k]);
       references.push_back({.channel = k,
@@ -456,6 +458,8 @@ int run_with(const cli& c, const floating_model& m, const std::vector<musculoten
     v.filmstrip.interval = 0.1;
     v.filmstrip.title = v.html_options.title;
     v.gait.cycles = go;
+    // The cycles the standard scores use (after the first 2 s), not the start's transient.
+    if (!scored_cycle_starts.empty()) v.gait.cycles.cycle_starts = scored_cycle_starts;
     v.gait.references = references;
     v.gait.show_cycles = false;
     v.gait.title = "Wang et al. 2012, muscle-driven walk: gait cycles (left leg)";
