@@ -169,6 +169,7 @@
 #include "gaitsynth/contact/terrain_ref.hpp"
 #include "gaitsynth/controllers/end_effector/planned_walk.hpp"
 #include "gaitsynth/controllers/end_effector/planned_walk_json.hpp"
+#include "gaitsynth/controllers/end_effector/planned_walk_names.hpp"
 #include "gaitsynth/integrators/semi_implicit_euler.hpp"
 #include "gaitsynth/io/csv.hpp"
 #include "gaitsynth/models/wu2010.hpp"
@@ -286,17 +287,17 @@ cli parse(int argc, char** argv) {
                  "touchdown (ours: where it landed, after the previous swing's tail) or "
                  "first_contact (ours: from its first contact, tail or not); a saved "
                  "controller's own when replaying")
-      ->check(CLI::IsMember({"planned_landing", "touchdown", "first_contact"}));
+      ->check(CLI::IsMember(names_of(stance_foot_target_names)));
   app.add_option("--half-cycle", c.half_cycle,
                  "when a half-cycle ends: fixed (the paper: every t_h) or touchdown (ours: t_h or "
                  "more after it began, once the swing foot touches); a saved controller's own "
                  "when replaying")
-      ->check(CLI::IsMember({"fixed", "touchdown"}));
+      ->check(CLI::IsMember(names_of(half_cycle_end_names)));
   app.add_option("--pin-by", c.pin_by,
                  "Sec. 6.3's contact test for pinning a stationary frame: its own geometry "
                  "(frame_geometry: the heel box for the heel frame) or any of its foot's (link); "
                  "a saved controller's own when replaying or starting from it")
-      ->check(CLI::IsMember({"frame_geometry", "link"}));
+      ->check(CLI::IsMember(names_of(pin_contact_names)));
   app.add_flag("--no-helper", c.no_helper,
                "optimize without Sec. 8.2's helper force (no h_max parameter; ours: a second "
                "stage from a helped run's --init)");
@@ -510,11 +511,10 @@ int run(const cli& c) {
   bool implicit = c.implicit_damping == "on";
   std::string task = c.task;
   po.helper_force = !c.no_helper;
-  po.stance_target = c.stance_target == "touchdown"       ? stance_foot_target::touchdown
-                     : c.stance_target == "first_contact" ? stance_foot_target::first_contact
-                                                          : stance_foot_target::planned_landing;
-  po.lower.pin_by = c.pin_by == "link" ? pin_contact::link : pin_contact::frame_geometry;
-  po.timing = c.half_cycle == "touchdown" ? half_cycle_end::touchdown : half_cycle_end::fixed;
+  // The command line checked each name against its table (planned_walk_names.hpp).
+  po.stance_target = *value_of(stance_foot_target_names, c.stance_target);
+  po.lower.pin_by = *value_of(pin_contact_names, c.pin_by);
+  po.timing = *value_of(half_cycle_end_names, c.half_cycle);
   if (!from.empty()) {
     const planned_walk_saved s = load_planned_walk(from);
     const planned_walk_options saved = saved_planned_walk_options(s, from, po);  // validates
@@ -558,12 +558,9 @@ int run(const cli& c) {
   po.period = rate > 0.0 ? 1.0 / rate : 0.0;
   po.setup.terrain_awareness = !terrain_blind;
   const bool helper = po.helper_force;
-  const std::string stance_target = po.stance_target == stance_foot_target::touchdown ? "touchdown"
-                                    : po.stance_target == stance_foot_target::first_contact
-                                        ? "first_contact"
-                                        : "planned_landing";
-  const std::string pin_by = po.lower.pin_by == pin_contact::link ? "link" : "frame_geometry";
-  const std::string half_cycle = po.timing == half_cycle_end::touchdown ? "touchdown" : "fixed";
+  const std::string stance_target(name_of(stance_foot_target_names, po.stance_target));
+  const std::string pin_by(name_of(pin_contact_names, po.lower.pin_by));
+  const std::string half_cycle(name_of(half_cycle_end_names, po.timing));
   const walk_controller ctrl(m, ground, po);
   const std::vector<std::string> names = ctrl.parameter_names();
 

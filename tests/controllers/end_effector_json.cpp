@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "gaitsynth/controllers/end_effector/planned_walk_json.hpp"
+#include "gaitsynth/controllers/end_effector/planned_walk_names.hpp"
 #include "gaitsynth/models/wu2010.hpp"
 
 using namespace gaitsynth;
@@ -210,7 +211,42 @@ TEST_CASE("planned_walk JSON: malformed files are refused, named",
              Catch::Contains("o.json: half_cycle_timing must be") && Catch::Contains("\"early\""));
   CHECK_THAT(option_error("symmetry", "lopsided"),
              Catch::Contains("o.json: symmetry must be") && Catch::Contains("\"lopsided\""));
+  // A name must be a string: a number is refused, not converted.
+  CHECK_THAT(option_error("pin_by", 0),
+             Catch::Contains("o.json: pin_by must be \"frame_geometry\" or \"link\", got 0"));
   // A size mismatch on saving.
   CHECK_THROWS_WITH(save_planned_walk(scratch_file("s.json"), names, std::vector<double>{1.0}, {}),
                     Catch::Contains("parameter names but 1 values"));
+}
+
+namespace {
+/// Every entry's name reads back as its value, names are unique, and an unknown name is nothing.
+template <class E, std::size_t N>
+void check_names_table(const enum_names<E, N>& table) {
+  for (std::size_t i = 0; i < N; ++i) {
+    CAPTURE(table[i].name);
+    CHECK(value_of(table, table[i].name) == table[i].value);
+    CHECK(name_of(table, table[i].value) == table[i].name);
+    for (std::size_t k = 0; k < i; ++k) CHECK(table[k].name != table[i].name);
+  }
+  CHECK_FALSE(value_of(table, "no such name").has_value());
+  CHECK(names_of(table).size() == N);
+}
+}  // namespace
+
+TEST_CASE("planned_walk JSON: the enum name tables read back and quote their choices",
+          "[controllers][end_effector][json]") {
+  check_names_table(stance_foot_target_names);
+  check_names_table(half_cycle_end_names);
+  check_names_table(planned_walk_symmetry_names);
+  check_names_table(pin_contact_names);
+  CHECK(quoted_choices(stance_foot_target_names) ==
+        "\"planned_landing\", \"touchdown\" or \"first_contact\"");
+  CHECK(quoted_choices(pin_contact_names) == "\"frame_geometry\" or \"link\"");
+  // What a saved file records is what the tables name: every value round-trips through a file.
+  for (const auto& e : half_cycle_end_names) {
+    planned_walk_saved s;
+    s.info["half_cycle_timing"] = std::string(e.name);
+    CHECK(saved_planned_walk_options(s, "o.json").timing == e.value);
+  }
 }

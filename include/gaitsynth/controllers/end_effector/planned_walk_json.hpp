@@ -22,28 +22,16 @@
 #include <fstream>
 #include <map>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <span>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
 #include "gaitsynth/controllers/end_effector/planned_walk.hpp"
+#include "gaitsynth/controllers/end_effector/planned_walk_names.hpp"
 
 namespace gaitsynth {
-
-/// The saved name of a symmetry: "asymmetric" (the side steps: each half-cycle its own Omega),
-/// "mirrored_planner" (the symmetric controllers the examples optimize) or "mirrored".
-inline const char* symmetry_name(planned_walk_symmetry s) {
-  switch (s) {
-    case planned_walk_symmetry::asymmetric:
-      return "asymmetric";
-    case planned_walk_symmetry::mirrored:
-      return "mirrored";
-    case planned_walk_symmetry::mirrored_planner:
-      break;
-  }
-  return "mirrored_planner";
-}
 
 /// A saved planned_walk: its parameters by name and everything else the file says.
 struct planned_walk_saved {
@@ -64,7 +52,7 @@ inline void save_planned_walk(
   nlohmann::ordered_json j;
   j["controller"] = "planned_walk";
   j["paper"] = "Wu & Popovic 2010, Sec. 7-8";
-  j["symmetry"] = symmetry_name(symmetry);
+  j["symmetry"] = name_of(planned_walk_symmetry_names, symmetry);
   j["parameter_names"] = names;
   j["parameters"] = std::vector<double>(x.begin(), x.end());
   for (const auto& [k, v] : info.items()) j[k] = v;
@@ -95,10 +83,11 @@ inline planned_walk_saved load_planned_walk(const std::filesystem::path& path) {
   if (!j.contains("controller") || j["controller"] != "planned_walk")
     fail("not a planned_walk controller (\"controller\": " +
          (j.contains("controller") ? j["controller"].dump() : std::string("missing")) + ")");
-  if (j.contains("symmetry") && j["symmetry"] != "mirrored_planner" &&
-      j["symmetry"] != "asymmetric" && j["symmetry"] != "mirrored")
-    fail("symmetry " + j["symmetry"].dump() +
-         " is not one of \"asymmetric\", \"mirrored_planner\", \"mirrored\"");
+  if (j.contains("symmetry") &&
+      !(j["symmetry"].is_string() &&
+        value_of(planned_walk_symmetry_names, j["symmetry"].get<std::string>())))
+    fail("symmetry " + j["symmetry"].dump() + " is not one of " +
+         quoted_choices(planned_walk_symmetry_names));
   if (!j.contains("parameter_names") || !j["parameter_names"].is_array() ||
       !j.contains("parameters") || !j["parameters"].is_array())
     fail("needs the arrays \"parameter_names\" and \"parameters\"");
@@ -175,51 +164,23 @@ inline planned_walk_options saved_planned_walk_options(const planned_walk_saved&
       fail("controller_rate", r, "0 or above 2 Hz");
     base.period = r.get<double>() > 0.0 ? 1.0 / r.get<double>() : 0.0;
   }
-  if (s.info.contains("stance_target")) {
-    const nlohmann::json& v = s.info["stance_target"];
-    if (v == "planned_landing")
-      base.stance_target = stance_foot_target::planned_landing;
-    else if (v == "touchdown")
-      base.stance_target = stance_foot_target::touchdown;
-    else if (v == "first_contact")
-      base.stance_target = stance_foot_target::first_contact;
-    else
-      fail("stance_target", v, "\"planned_landing\", \"touchdown\" or \"first_contact\"");
-  }
-  if (s.info.contains("half_cycle_timing")) {
-    const nlohmann::json& v = s.info["half_cycle_timing"];
-    if (v == "fixed")
-      base.timing = half_cycle_end::fixed;
-    else if (v == "touchdown")
-      base.timing = half_cycle_end::touchdown;
-    else
-      fail("half_cycle_timing", v, "\"fixed\" or \"touchdown\"");
-  }
-  if (s.info.contains("symmetry")) {
-    const nlohmann::json& v = s.info["symmetry"];
-    if (v == "asymmetric")
-      base.symmetry = planned_walk_symmetry::asymmetric;
-    else if (v == "mirrored")
-      base.symmetry = planned_walk_symmetry::mirrored;
-    else if (v == "mirrored_planner")
-      base.symmetry = planned_walk_symmetry::mirrored_planner;
-    else
-      fail("symmetry", v, "\"asymmetric\", \"mirrored_planner\" or \"mirrored\"");
-  }
+  // An enum field: one of its table's names (planned_walk_names.hpp).
+  auto read = [&](const char* field, const auto& table, auto& out) {
+    if (!s.info.contains(field)) return;
+    const nlohmann::json& v = s.info[field];
+    const auto value = v.is_string() ? value_of(table, v.get<std::string>()) : std::nullopt;
+    if (!value) fail(field, v, quoted_choices(table));
+    out = *value;
+  };
+  read("stance_target", stance_foot_target_names, base.stance_target);
+  read("half_cycle_timing", half_cycle_end_names, base.timing);
+  read("symmetry", planned_walk_symmetry_names, base.symmetry);
   if (s.info.contains("helper_force")) {
     const nlohmann::json& v = s.info["helper_force"];
     if (!v.is_boolean()) fail("helper_force", v, "true or false");
     base.helper_force = v.get<bool>();
   }
-  if (s.info.contains("pin_by")) {
-    const nlohmann::json& v = s.info["pin_by"];
-    if (v == "frame_geometry")
-      base.lower.pin_by = pin_contact::frame_geometry;
-    else if (v == "link")
-      base.lower.pin_by = pin_contact::link;
-    else
-      fail("pin_by", v, "\"frame_geometry\" or \"link\"");
-  }
+  read("pin_by", pin_contact_names, base.lower.pin_by);
   return base;
 }
 
