@@ -13,6 +13,7 @@
 //                 scaled by the weights: controllers/fsm/wang2009_shape_transfer.hpp)
 //                 [--check-seconds S] [--horizon S] [--sigma S]
 //                 [--robust-starts K] [--start-sigma S] [--robust-pushes K] [--push-force N]
+//                 [--push-direction-step D] [--push-period S] [--push-phase fixed|random]
 //                 [--without TERM]...   (E_ratio, E_ang, ...: the term's weight set to 0)
 //                 [--weight TERM=W]...  (the term's weight of eq. 16 set to W; ours, not the
 //                 paper's: a continuation stage may press one term harder)
@@ -33,7 +34,14 @@
 // --robust-pushes K adds K rollouts pushed on the torso COM for 0.4 s every 3 s (from 2 s) with
 // push-force newtons in Table 1's directions, variant k starting at direction k. The starts and
 // pushes are the same for every candidate, so the cost stays a deterministic function of the
-// parameters whatever the thread count.
+// parameters whatever the thread count. --push-direction-step D turns each later push of a variant
+// D directions on (1, the default; 0: each variant pushes its own direction every time, as Table
+// 1's protocol does; -1: K), --push-period S sets the time between pushes (3 s; the protocol: 4),
+// and --push-phase random moves each pushed variant's pushes by its own phase in [0, S), drawn anew
+// every iteration from the seed and the iteration (synthesis/robust_variants.hpp), so that no
+// candidate is rewarded for where in its gait cycle fixed pushes land; every candidate of an
+// iteration meets the same pushes, a resumed run redraws exactly, and the run then also saves
+// CMA's mean (.mean.json), since its best single candidate is partly luck. Not with --mpi.
 //
 // Every form takes the viewer flags (--html FILE, --filmstrip FILE, --csv FILE, ...;
 // examples/command_line.hpp) for the check rollout. --help lists every flag with its default.
@@ -43,11 +51,13 @@
 // stderr and a one-line JSON summary on stdout.
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <limits>
 #include <map>
 #include <nlohmann/json.hpp>
 #include <numbers>
@@ -99,6 +109,9 @@ struct cli {
   int robust_starts = 0, robust_pushes = 0;
   double start_sigma = 0.05;              // rad/s, the claim tests' perturbation
   double push_force = 100.0;              // N
+  int push_direction_step = 1;            // -1: robust_pushes (robust_variant_options)
+  double push_period = 3.0;               // s between a pushed rollout's pushes
+  std::string push_phase = "fixed";       // fixed: first push at 2 s; random: redrawn per iteration
   std::vector<std::string> without;       // terms of eq. 16 left out (weight 0): Figs. 3 and 4
   std::map<std::string, double> weights;  // --weight TERM=W: weights of eq. 16 set by hand
   std::map<std::string, std::pair<double, double>> bounds;  // --bound PARAM=LO:HI
@@ -160,6 +173,18 @@ cli parse(int argc, char** argv) {
       ->check(example_cli::integer_in(0, 1000));
   app.add_option("--push-force", c.push_force, "force of those pushes, N")
       ->check(example_cli::in_range(0.0, 10000.0));
+  app.add_option("--push-direction-step", c.push_direction_step,
+                 "directions each later push of a pushed rollout turns on (-1: K; 0: each rollout "
+                 "pushes its own direction every time, as Table 1's protocol does)")
+      ->check(example_cli::integer_in(-1, 7));
+  app.add_option("--push-period", c.push_period,
+                 "s between the starts of a pushed rollout's pushes (the first at 2 s; Table 1's "
+                 "protocol: 4)")
+      ->check(example_cli::in_range(0.5, 1000.0));
+  app.add_option("--push-phase", c.push_phase,
+                 "fixed: a pushed rollout's pushes start at 2 s; random: each pushed rollout's "
+                 "pushes move by its own phase in [0, push period), drawn anew every iteration")
+      ->check(CLI::IsMember({"fixed", "random"}));
   app.add_option("--without", c.without, "a term of eq. 16 at weight 0 (repeatable)");
   app.add_option("--weight", weights, "TERM=W: a term's weight of eq. 16 (repeatable)")
       ->check(example_cli::name_equals_number());
@@ -178,6 +203,10 @@ cli parse(int argc, char** argv) {
     out = resume;
     c.resume = true;
   }
+  check_argument(!(c.mpi && c.push_phase == "random"),
+                 "--push-phase random redraws the pushes between iterations in this process; "
+                 "with --mpi the other processes would keep the old ones: use --push-phase fixed "
+                 "or the thread pool");
 #ifndef GAITSYNTH_HAVE_MPI
   check_argument(!c.mpi,
                  "--mpi: this build has no MPI (install Open MPI, libopenmpi-dev, and configure "
@@ -434,7 +463,10 @@ int optimize_and_check(const floating_model& m, const cli& c, const wang2009_con
   bool served = false;  // --mpi, ranks other than 0: they evaluated, rank 0 reports
   // CMA-ES on `problem`'s cost at the horizon: the paper's problem or one with robust variants,
   // evaluated by `eval` (a thread pool, or the processes of an MPI job).
-  auto optimize_with = [&](const auto& problem, auto& eval) {
+  // before_iteration(i) runs before iteration i + 1 (from 0; after a resume, first with the
+  // checkpoint's count): where --push-phase random redraws the pushes.
+  auto optimize_with = [&](const auto& problem, auto& eval, auto&& before_iteration,
+                           bool save_mean) {
     problem_contexts ctx(problem, eval.thread_count());
     problem_cost cost(problem, c.horizon, ctx);
 #ifdef GAITSYNTH_HAVE_MPI
@@ -459,41 +491,73 @@ int optimize_and_check(const floating_model& m, const cli& c, const wang2009_con
     ro.checkpoint_file = stem + ".checkpoint";
     ro.checkpoint_every = 10;
     ro.resume = c.resume;
+    std::int64_t done = 0;
+    if (c.resume && fs::exists(ro.checkpoint_file)) {
+      load_checkpoint(opt_cma, ro.checkpoint_file);  // (minimize loads it again) its count
+      done = opt_cma.status().iteration;
+    }
+    before_iteration(done);
+    // The distribution's mean, clipped to the bounds (its cost is not evaluated: NaN).
+    const parameter_space space = search_space(m, ctrl, x0, c.bounds);
+    auto save_cma_mean = [&] {
+      Eigen::VectorXd mu = opt_cma.mean_user();
+      const std::vector<parameter_spec>& specs = space.parameters();
+      for (std::size_t i = 0; i < specs.size(); ++i) {
+        const auto k = static_cast<Eigen::Index>(i);
+        mu[k] = std::clamp(mu[k], specs[i].lower, specs[i].upper);
+      }
+      save(stem + ".mean.json", c, ctrl, mu, std::numeric_limits<double>::quiet_NaN());
+    };
     // The best point so far is saved with every checkpoint, so a stopped run leaves a controller.
     auto keep_best = [&](const optimizer_status& st) {
       if (st.iteration % 10 == 0 && std::isfinite(opt_cma.best_value()))
         save(stem + ".controller.json", c, ctrl, opt_cma.best_x(), opt_cma.best_value());
+      if (save_mean && st.iteration % 10 == 0) save_cma_mean();
+      before_iteration(st.iteration);
     };
     res = minimize(opt_cma, cost, eval, ro, keep_best);
     best = res.x;
     best_cost = res.value;
     save(stem + ".controller.json", c, ctrl, best, best_cost);
+    if (save_mean) save_cma_mean();
   };
-  auto optimize = [&](const auto& problem) {
+  auto optimize = [&](const auto& problem, auto&& before_iteration, bool save_mean) {
 #ifdef GAITSYNTH_HAVE_MPI
     if (c.mpi) {
       mpi_evaluator eval(MPI_COMM_WORLD, {.threads = c.threads});
-      optimize_with(problem, eval);
+      optimize_with(problem, eval, before_iteration, save_mean);
       if (eval.is_root()) eval.release();
       return;
     }
 #endif
     thread_pool_evaluator pool(c.threads);
-    optimize_with(problem, pool);
+    optimize_with(problem, pool, before_iteration, save_mean);
   };
   if (c.replay.empty() && c.iterations > 0) {
     if (c.robust_starts == 0 && c.robust_pushes == 0) {
-      optimize(prob);
+      optimize(
+          prob, [](std::int64_t) {}, false);
     } else {
       // Training perturbations are seeded apart from the check's (seed 2009 below), so the check
       // judges the walker on starts it was not optimized for.
-      auto variants = robust_variants(prob, {.starts = c.robust_starts,
-                                             .start_sigma = c.start_sigma,
-                                             .seed = 1000 + c.seed,
-                                             .pushes = c.robust_pushes,
-                                             .push_force = c.push_force,
-                                             .horizon = c.horizon});
-      optimize(make_problem_with_variants(prob, std::move(variants)));
+      const robust_variant_options vo{.starts = c.robust_starts,
+                                      .start_sigma = c.start_sigma,
+                                      .seed = 1000 + c.seed,
+                                      .pushes = c.robust_pushes,
+                                      .push_force = c.push_force,
+                                      .push_period = c.push_period,
+                                      .horizon = c.horizon,
+                                      .push_direction_step = c.push_direction_step < 0
+                                                                 ? c.robust_pushes
+                                                                 : c.push_direction_step};
+      auto robust = make_problem_with_variants(prob, robust_variants(prob, vo));
+      const bool random_phase = c.push_phase == "random";
+      auto redraw = [&](std::int64_t i) {
+        if (random_phase)
+          redraw_push_phases(robust.variants, prob, vo,
+                             c.seed * 1000003ull + static_cast<std::uint64_t>(i));
+      };
+      optimize(robust, redraw, random_phase);
     }
   }
   if (served) return 0;
