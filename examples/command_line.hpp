@@ -195,6 +195,26 @@ inline CLI::Option* add_seed(CLI::App& app, unsigned long long& seed,
   return app.add_option("--seed", seed, "random seed")->check(integer_in(0, max));
 }
 
+/// --push-direction-step, --push-period and --push-phase: the schedule of a robust optimization's
+/// pushed rollouts (synthesis/robust_variants.hpp), as wang2009_walk and wang2012_walk take it.
+/// direction_step -1 stands for the number of pushed rollouts.
+inline void add_push_schedule_flags(CLI::App& app, int& direction_step, double& period,
+                                    std::string& phase) {
+  app.add_option("--push-direction-step", direction_step,
+                 "directions each later push of a pushed rollout turns on (-1: K, so K = 3 "
+                 "rollouts push all eight; 0: each rollout pushes its own direction every time, "
+                 "as Table 1's protocol does)")
+      ->check(integer_in(-1, 7));
+  app.add_option("--push-period", period,
+                 "s between the starts of a pushed rollout's pushes (the first at 2 s; Table 1's "
+                 "protocol: 4)")
+      ->check(in_range(0.5, 1000.0));
+  app.add_option("--push-phase", phase,
+                 "fixed: a pushed rollout's pushes start at 2 s; random: each pushed rollout's "
+                 "pushes move by its own phase in [0, push period), drawn anew every iteration")
+      ->check(CLI::IsMember({"fixed", "random"}));
+}
+
 /// The viewer flags (io/viewer_outputs.hpp, docs/viewer.md) as one option group.
 inline CLI::Option_group* add_viewer_flags(CLI::App& app, gaitsynth::viz_outputs& v,
                                            const std::string& of = "the check rollout") {

@@ -173,18 +173,7 @@ cli parse(int argc, char** argv) {
       ->check(example_cli::integer_in(0, 1000));
   app.add_option("--push-force", c.push_force, "force of those pushes, N")
       ->check(example_cli::in_range(0.0, 10000.0));
-  app.add_option("--push-direction-step", c.push_direction_step,
-                 "directions each later push of a pushed rollout turns on (-1: K; 0: each rollout "
-                 "pushes its own direction every time, as Table 1's protocol does)")
-      ->check(example_cli::integer_in(-1, 7));
-  app.add_option("--push-period", c.push_period,
-                 "s between the starts of a pushed rollout's pushes (the first at 2 s; Table 1's "
-                 "protocol: 4)")
-      ->check(example_cli::in_range(0.5, 1000.0));
-  app.add_option("--push-phase", c.push_phase,
-                 "fixed: a pushed rollout's pushes start at 2 s; random: each pushed rollout's "
-                 "pushes move by its own phase in [0, push period), drawn anew every iteration")
-      ->check(CLI::IsMember({"fixed", "random"}));
+  example_cli::add_push_schedule_flags(app, c.push_direction_step, c.push_period, c.push_phase);
   app.add_option("--without", c.without, "a term of eq. 16 at weight 0 (repeatable)");
   app.add_option("--weight", weights, "TERM=W: a term's weight of eq. 16 (repeatable)")
       ->check(example_cli::name_equals_number());
@@ -500,12 +489,7 @@ int optimize_and_check(const floating_model& m, const cli& c, const wang2009_con
     // The distribution's mean, clipped to the bounds (its cost is not evaluated: NaN).
     const parameter_space space = search_space(m, ctrl, x0, c.bounds);
     auto save_cma_mean = [&] {
-      Eigen::VectorXd mu = opt_cma.mean_user();
-      const std::vector<parameter_spec>& specs = space.parameters();
-      for (std::size_t i = 0; i < specs.size(); ++i) {
-        const auto k = static_cast<Eigen::Index>(i);
-        mu[k] = std::clamp(mu[k], specs[i].lower, specs[i].upper);
-      }
+      const Eigen::VectorXd mu = space.clamp_user(opt_cma.mean_user());
       save(stem + ".mean.json", c, ctrl, mu, std::numeric_limits<double>::quiet_NaN());
     };
     // The best point so far is saved with every checkpoint, so a stopped run leaves a controller.
@@ -553,9 +537,7 @@ int optimize_and_check(const floating_model& m, const cli& c, const wang2009_con
       auto robust = make_problem_with_variants(prob, robust_variants(prob, vo));
       const bool random_phase = c.push_phase == "random";
       auto redraw = [&](std::int64_t i) {
-        if (random_phase)
-          redraw_push_phases(robust.variants, prob, vo,
-                             c.seed * 1000003ull + static_cast<std::uint64_t>(i));
+        if (random_phase) redraw_push_phases(robust.variants, prob, vo, push_phase_seed(c.seed, i));
       };
       optimize(robust, redraw, random_phase);
     }

@@ -164,19 +164,7 @@ cli parse(int argc, char** argv) {
       ->check(example_cli::integer_in(0, 1000));
   app.add_option("--push-force", c.push_force, "force of those pushes, N (Sec. 6.4: 100)")
       ->check(example_cli::in_range(0.0, 100000.0));
-  app.add_option("--push-direction-step", c.push_direction_step,
-                 "directions each later push of a pushed rollout turns on (-1: K, so K = 3 "
-                 "rollouts push all eight; 0: each rollout pushes its own direction every time, "
-                 "as Table 1's protocol does)")
-      ->check(example_cli::integer_in(-1, 7));
-  app.add_option("--push-period", c.push_period,
-                 "s between the starts of a pushed rollout's pushes (the first at 2 s; Table 1's "
-                 "protocol: 4)")
-      ->check(example_cli::in_range(0.5, 1000.0));
-  app.add_option("--push-phase", c.push_phase,
-                 "fixed: a pushed rollout's pushes start at 2 s; random: each pushed rollout's "
-                 "pushes move by its own phase in [0, push period), drawn anew every iteration")
-      ->check(CLI::IsMember({"fixed", "random"}));
+  example_cli::add_push_schedule_flags(app, c.push_direction_step, c.push_period, c.push_phase);
   app.add_option("--check-pushes", c.check_pushes,
                  "also check Table 1's 40 s push protocol (a 0.4 s push to the torso every 4 s) "
                  "with this force, N, along each of its 8 directions (0: not checked)")
@@ -315,15 +303,7 @@ int run_with(const cli& c, const floating_model& m, const std::vector<musculoten
     before_iteration(done);
     // The distribution's mean, clipped to the bounds (its cost is not evaluated: null).
     const parameter_space space = wang2012_search_space(x0);
-    auto mean = [&] {
-      Eigen::VectorXd mu = cma.mean_user();
-      const std::vector<parameter_spec>& specs = space.parameters();
-      for (std::size_t i = 0; i < specs.size(); ++i) {
-        const auto k = static_cast<Eigen::Index>(i);
-        mu[k] = std::clamp(mu[k], specs[i].lower, specs[i].upper);
-      }
-      return mu;
-    };
+    auto mean = [&] { return space.clamp_user(cma.mean_user()); };
     auto keep_best = [&](const optimizer_status& st) {
       if (st.iteration % 10 == 0 && std::isfinite(cma.best_value()))
         save(cma.best_x(), cma.best_value());
@@ -357,9 +337,7 @@ int run_with(const cli& c, const floating_model& m, const std::vector<musculoten
       auto robust = make_problem_with_variants(prob, robust_variants(prob, vo));
       const bool random_phase = c.push_phase == "random";
       auto redraw = [&](std::int64_t i) {
-        if (random_phase)
-          redraw_push_phases(robust.variants, prob, vo,
-                             c.seed * 1000003ull + static_cast<std::uint64_t>(i));
+        if (random_phase) redraw_push_phases(robust.variants, prob, vo, push_phase_seed(c.seed, i));
       };
       optimize(robust, redraw, random_phase);
     }

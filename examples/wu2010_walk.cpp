@@ -676,13 +676,8 @@ int run(const cli& c) {
     // The distribution's mean, clipped to the bounds: on a new field every iteration the best
     // single sample is partly luck (an easy field), the mean what the search has settled on.
     auto save_mean = [&](const optimizer_status& st) {
-      Eigen::VectorXd mu = cma.mean_user();
-      const std::vector<parameter_spec>& specs = space.parameters();
-      for (std::size_t i = 0; i < specs.size(); ++i) {
-        const auto k = static_cast<Eigen::Index>(i);
-        mu[k] = std::clamp(mu[k], specs[i].lower, specs[i].upper);
-      }
-      save(mu, std::numeric_limits<double>::quiet_NaN(), st, ".mean.json");
+      save(space.clamp_user(cma.mean_user()), std::numeric_limits<double>::quiet_NaN(), st,
+           ".mean.json");
     };
     thread_pool_evaluator pool(c.threads);
     problem_contexts ctx(robust, pool.thread_count());

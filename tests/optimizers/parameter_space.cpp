@@ -87,3 +87,16 @@ TEST_CASE("parameter_space::with_initial checks size and bounds", "[optimizers]"
                     Contains("x0") && Contains("expected 2, got 3"));
   CHECK_THROWS_WITH(s.with_initial(Eigen::Vector2d(0.1, 1.5)), Contains("1.5"));
 }
+
+TEST_CASE("parameter_space::clamp_user clips a user point into the bounds", "[optimizers]") {
+  // A bounded, a log-scaled and a half-bounded parameter: each clipped in user units.
+  parameter_space s({{"box", -1.0, 2.0, 0.0},
+                     {"gain", 10.0, 1000.0, 100.0, 0.0, parameter_scaling::logarithmic},
+                     {"positive", 0.0, inf, 4.0}});
+  CHECK(s.clamp_user(Eigen::Vector3d(5.0, 1.0, -3.0)) == Eigen::Vector3d(2.0, 10.0, 0.0));
+  CHECK(s.clamp_user(Eigen::Vector3d(-1.5, 2e3, 1e9)) == Eigen::Vector3d(-1.0, 1000.0, 1e9));
+  const Eigen::Vector3d inside(0.25, 55.0, 7.0);
+  CHECK(s.clamp_user(inside) == inside);  // unchanged, bit for bit
+  CHECK_THROWS_WITH(s.clamp_user(Eigen::Vector2d(0.0, 0.0)),
+                    Contains("user point") && Contains("expected 3, got 2"));
+}

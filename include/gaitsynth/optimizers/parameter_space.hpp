@@ -192,6 +192,17 @@ class parameter_space {
     }
     return true;
   }
+  /// Closest point of the bounds to a user point (coordinate-wise clamp): e.g. CMA-ES's mean,
+  /// which may lie outside them, saved as a controller.
+  Eigen::VectorXd clamp_user(const Eigen::VectorXd& x) const {
+    check_size(x.size(), size(), "user point");
+    Eigen::VectorXd p(x.size());
+    for (Eigen::Index i = 0; i < x.size(); ++i) {
+      const auto& s = params_[static_cast<std::size_t>(i)];
+      p[i] = std::clamp(x[i], s.lower, s.upper);
+    }
+    return p;
+  }
   /// Closest point of the normalized box (coordinate-wise clamp).
   Eigen::VectorXd project_normalized(const Eigen::VectorXd& u) const {
     Eigen::VectorXd p(u.size());

@@ -102,6 +102,12 @@ std::vector<Problem> robust_variants(const Problem& prob, const robust_variant_o
   return out;
 }
 
+/// The seed of iteration `iteration`'s push phases in a run seeded `run_seed`: distinct per
+/// iteration and run, so a resumed run redraws exactly what the whole run drew.
+inline std::uint64_t push_phase_seed(std::uint64_t run_seed, std::int64_t iteration) {
+  return run_seed * 1000003ull + static_cast<std::uint64_t>(iteration);
+}
+
 /// The phases redraw_push_phases gives the o.pushes pushed variants for `seed`: each uniform in
 /// [0, push_period), from its own stream (seed, k), so they do not depend on the variant count.
 inline std::vector<double> push_phases(const robust_variant_options& o, std::uint64_t seed) {
