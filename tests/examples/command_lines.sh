@@ -21,6 +21,10 @@
 #                                        keeps INIT's weakness and colliding legs (the body it was
 #                                        made for); with --weaken HAM=1 --leg-collisions off too it
 #                                        takes those instead
+#   command_lines.sh saved_ground EXE WALKERS_DIR
+#                                        wang2009_push_test --controller pushes a saved walker on
+#                                        the slope and friction it was made for (its file's info),
+#                                        and --slope and --mu override them
 #   command_lines.sh resume EXE DIR STEM WAIT_FOR FLAGS... -- OTHER_FLAGS...
 #                                        EXE killed (SIGKILL) after its first checkpoint, then 3
 #                                        times at seeded random moments while resuming, and
@@ -93,6 +97,11 @@ case "$mode" in
         expect 2 "--task: sideways not in \{f,b,l,r,s\}" -- "$exe" --task sideways
         expect 2 "--h-max-cap: must be in .*, got -500" -- "$exe" --h-max-cap -500
         expect 2 "--h-max-cap: must be in .*, got nan" -- "$exe" --h-max-cap nan
+      fi
+      if grep -qE -- "--mu\b" <<<"$help"; then
+        expect 2 "--mu: must be in .*, got -1" -- "$exe" --mu -1
+        expect 2 "--mu: must be in .*, got nan" -- "$exe" --mu nan
+        expect 2 "--slope: must be in .*, got 50" -- "$exe" --slope 50
       fi
       if grep -q -- "--seed" <<<"$help"; then
         expect 2 "--seed: must be in .*, got -3" -- "$exe" --seed -3
@@ -277,6 +286,26 @@ print(json.dumps(i.get("weaken", {}), sort_keys=True), i.get("leg_collisions", F
         fail=1
       fi
     fi
+    ;;
+  saved_ground)
+    exe=$1 dir=$2
+    ground() {  # ground WANT FLAGS...: the push test's ground line for FLAGS is WANT
+      local want=$1 out
+      shift
+      out=$("$exe" "$@" 2>&1 | head -1)
+      if [[ "$out" == "$want" ]]; then
+        echo "ok: $* -> $out"
+      else
+        echo "FAIL: $(basename "$exe") $* -> '$out' (want '$want')"; fail=1
+      fi
+    }
+    # One 5 N step: the ground line comes first whatever the walker survives.
+    f=(--resolution 5 --max-force 5)
+    ground "ground: slope 0 deg, mu 0.3" --controller "$dir/stocky_mu03.controller.json" "${f[@]}"
+    ground "ground: slope 12 deg, mu 10" --controller "$dir/stocky_slope12.controller.json" "${f[@]}"
+    ground "ground: slope 3 deg, mu 0.8" --controller "$dir/stocky_slope12.controller.json" \
+      --slope 3 --mu 0.8 "${f[@]}"
+    ground "ground: slope 0 deg, mu 10" "${f[@]}"  # SIMBICON
     ;;
   *) echo "unknown mode $mode"; exit 2 ;;
 esac
