@@ -53,6 +53,7 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <iomanip>
 #include <iostream>
 #include <limits>
 #include <map>
@@ -525,6 +526,15 @@ int run(cli c) {
     // weights, effort) does not, as each stage states its own.
     if (c.weaken.empty()) c.weaken = s.info.value("weaken", std::map<std::string, double>{});
     if (!c.leg_collisions_given && s.info.value("leg_collisions", false)) c.leg_collisions = "on";
+    // options.json lists the effective values, so it shows the body the run optimizes.
+    c.options["leg-collisions"] = c.leg_collisions;
+    nlohmann::json weaken = nlohmann::json::array();
+    for (const auto& [name, factor] : c.weaken) {
+      std::ostringstream v;
+      v << name << '=' << std::setprecision(17) << factor;
+      weaken.push_back(v.str());
+    }
+    c.options["weaken"] = weaken;
     if (!c.replay.empty()) {
       // A replay is judged by the problem it was optimized for, unless told otherwise.
       speed = s.target_speed;
@@ -533,6 +543,7 @@ int run(cli c) {
     }
   }
   if (c.effort.empty()) c.effort = "metabolic";
+  if (!c.resume) example_cli::write_options(c.command, c.options, c.out);
   const auto units = weakened_muscles(m, c.weaken);
   if (c.effort == "torque")  // min_torque, w_M = 5 (Sec. 6.2)
     return run_with(c, m, units, x0, speed, wang2012::sagittal_joint_torque(units), 5.0);
@@ -546,8 +557,7 @@ int run(cli c) {
 int main(int argc, char** argv) try {
   cli c = parse(argc, argv);
   c.out = example_cli::run_folder("wang2012_walk", c.out_arg);
-  if (!c.resume) example_cli::write_options(c.command, c.options, c.out);
-  return run(c);
+  return run(c);  // writes options.json once --init's or --replay's body is known
 } catch (const std::exception& e) {
   std::cerr << "wang2012_walk: " << e.what() << "\n";
   return 1;

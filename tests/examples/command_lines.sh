@@ -19,8 +19,9 @@
 #   command_lines.sh init_body EXE DIR INIT FLAGS...
 #                                        wang2012_walk --init INIT FLAGS: the saved controller
 #                                        keeps INIT's weakness and colliding legs (the body it was
-#                                        made for); with --weaken HAM=1 --leg-collisions off too it
-#                                        takes those instead
+#                                        made for), and options.json lists that body; with
+#                                        --weaken HAM=1 --leg-collisions off too it takes those
+#                                        instead
 #   command_lines.sh saved_ground EXE WALKERS_DIR
 #                                        wang2009_push_test --controller pushes a saved walker on
 #                                        the slope and friction it was made for (its file's info),
@@ -269,12 +270,24 @@ print(json.dumps(i.get("weaken", {}), sort_keys=True), i.get("leg_collisions", F
     }
     want=$(body "$init")
     rm -rf "$dir"
+    listed() {  # the body options.json lists, in body's form
+      python3 -c 'import json, sys
+o = json.load(open(sys.argv[1]))["options"]
+w = {k: float(v) for k, v in (e.split("=") for e in o["weaken"])}
+print(json.dumps(w, sort_keys=True), o["leg-collisions"] == "on")' "$1"
+    }
     if runs "$exe" --init "$init" "$@" --out "$dir/kept"; then
       got=$(body "$dir/kept/wang2012_walk.controller.json")
       if [[ "$got" == "$want" ]]; then
         echo "ok: --init keeps the body: $got"
       else
         echo "FAIL: --init $init: the saved body is '$got', the init's '$want'"; fail=1
+      fi
+      got=$(listed "$dir/kept/options.json")
+      if [[ "$got" == "$want" ]]; then
+        echo "ok: options.json lists the body: $got"
+      else
+        echo "FAIL: --init $init: options.json lists the body '$got', the init's '$want'"; fail=1
       fi
     fi
     if runs "$exe" --init "$init" "$@" --weaken HAM=1 --leg-collisions off --out "$dir/told"; then
@@ -283,6 +296,11 @@ print(json.dumps(i.get("weaken", {}), sort_keys=True), i.get("leg_collisions", F
         echo "ok: --weaken and --leg-collisions override the init's body: $got"
       else
         echo "FAIL: --init $init --weaken HAM=1 --leg-collisions off: the saved body is '$got'"
+        fail=1
+      fi
+      got=$(listed "$dir/told/options.json")
+      if [[ "$got" != '{"HAM": 1.0} False' ]]; then
+        echo "FAIL: --init $init --weaken HAM=1 --leg-collisions off: options.json lists '$got'"
         fail=1
       fi
     fi
