@@ -150,12 +150,14 @@
 #include <cstdint>
 #include <filesystem>
 #include <fstream>
+#include <iomanip>
 #include <iostream>
 #include <map>
 #include <nlohmann/json.hpp>
 #include <numbers>
 #include <optional>
 #include <span>
+#include <sstream>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -544,6 +546,20 @@ int run(const cli& c) {
       task = t.get<std::string>();
     }
   }
+  {  // options.json lists the effective values, those taken from --init or --replay included.
+    nlohmann::json options = c.options;
+    std::ostringstream hz;
+    hz << std::setprecision(17) << rate;
+    options["controller-rate"] = hz.str();
+    options["stance-target"] = std::string(name_of(stance_foot_target_names, po.stance_target));
+    options["pin-by"] = std::string(name_of(pin_contact_names, po.lower.pin_by));
+    options["half-cycle"] = std::string(name_of(half_cycle_end_names, po.timing));
+    options["terrain-blind"] = terrain_blind;
+    options["leg-collisions"] = legs ? "on" : "off";
+    options["implicit-damping"] = implicit ? "on" : "off";
+    options["task"] = task;
+    if (!c.resume) example_cli::write_options(c.command, options, c.out);
+  }
   po.goal = task_goal_of(task);
   // The side steps' half-cycles are not mirror images: each has its own Omega (Table 1's caption:
   // "except for symmetric controllers").
@@ -857,8 +873,7 @@ int run(const cli& c) {
 int main(int argc, char** argv) try {
   cli c = parse(argc, argv);
   c.out = example_cli::run_folder("wu2010_walk", c.out_arg);
-  if (!c.resume) example_cli::write_options(c.command, c.options, c.out);
-  return run(c);
+  return run(c);  // writes options.json once --init's or --replay's settings are known
 } catch (const std::exception& e) {
   std::cerr << "wu2010_walk: " << e.what() << "\n";
   return 1;

@@ -22,6 +22,10 @@
 #                                        made for), and options.json lists that body; with
 #                                        --weaken HAM=1 --leg-collisions off too it takes those
 #                                        instead
+#   command_lines.sh init_settings EXE DIR INIT FLAGS...
+#                                        wu2010_walk --init INIT FLAGS --out DIR: options.json lists
+#                                        the controller rate, stance target, pinning, half-cycle end
+#                                        and terrain sampling taken from INIT, not the defaults
 #   command_lines.sh saved_ground EXE WALKERS_DIR
 #                                        wang2009_push_test --controller pushes a saved walker on
 #                                        the slope and friction it was made for (its file's info),
@@ -303,6 +307,26 @@ print(json.dumps(w, sort_keys=True), o["leg-collisions"] == "on")' "$1"
         echo "FAIL: --init $init --weaken HAM=1 --leg-collisions off: options.json lists '$got'"
         fail=1
       fi
+    fi
+    ;;
+  init_settings)
+    exe=$1 dir=$2 init=$3
+    shift 3
+    rm -rf "$dir"
+    if runs "$exe" --init "$init" "$@" --out "$dir"; then
+      cmp_out=$(python3 -c 'import json, sys
+saved = json.load(open(sys.argv[1]))
+listed = json.load(open(sys.argv[2]))["options"]
+pairs = [("controller-rate", "controller_rate"), ("stance-target", "stance_target"),
+         ("pin-by", "pin_by"), ("half-cycle", "half_cycle_timing"),
+         ("terrain-blind", "terrain_blind")]
+for flag, key in pairs:
+    got, want = listed[flag], saved[key]
+    same = float(got) == float(want) if flag == "controller-rate" else got == want
+    print(("ok" if same else "FAIL") + ": options.json --%s %s, %s has %s" % (flag, got, sys.argv[1], want))' \
+        "$init" "$dir/options.json")
+      echo "$cmp_out"
+      grep -q FAIL <<<"$cmp_out" && fail=1
     fi
     ;;
   saved_ground)
