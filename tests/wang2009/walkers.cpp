@@ -169,6 +169,32 @@ rollout_result walk_saved(const std::string& file, const Terrain& ground, double
                  std::span<const double>(p), opt, scratch);
 }
 
+/// The saved controller `file` (under data/wang2009/) on flat ground at mu = 10 for `seconds`, from
+/// its own start and then from the claim tests' first `perturbed` perturbed starts (seed 2009),
+/// ended by rollout/walk_check.hpp's stall rule too when `walk_rule`: the own start's end first.
+std::vector<rollout_result> walk_saved_from_starts(const std::string& file, double seconds,
+                                                   int perturbed, bool walk_rule) {
+  const std::string path = std::string(GAITSYNTH_SOURCE_DIR) + "/data/wang2009/" + file;
+  const floating_model m = wang2009_humanoid(wang2009_preset(wang2009_saved_shape(path)));
+  wang2009_controller c(m);
+  const std::vector<double> p = load_wang2009_controller(path, c).parameters;
+  rollout_options opt = wang2009_rollout_options(m);
+  opt.duration = seconds;
+  if (walk_rule) opt = walk_options(opt);
+  auto scratch = make_rollout_scratch(m);
+  std::vector<Eigen::VectorXd> starts{Eigen::VectorXd()};
+  for (const Eigen::VectorXd& dv : joint_velocity_perturbations(m, perturbed, 0.05, 2009))
+    starts.push_back(dv);
+  std::vector<rollout_result> out;
+  for (const Eigen::VectorXd& dv : starts) {
+    opt.initial_velocity_offset = dv;
+    wang2009_controller ck = c;
+    out.push_back(rollout(m, mixed_pd_actuator{}, ck, distance_objective(), flat_terrain{},
+                          semi_implicit_euler{}, std::span<const double>(p), opt, scratch));
+  }
+  return out;
+}
+
 /// A level walker (optimized on flat ground, mu = 10; by default the stocky walker of Table 2) for
 /// 30 s on `ground` with friction mu.
 template <class Terrain>
@@ -452,37 +478,22 @@ TEST_CASE("wang2009: the overweight walker walks 100 s", "[wang2009][claim]") {
 // (data/wang2009/runs/stocky_fig4_without_ang_robust/).
 TEST_CASE("wang2009: Fig. 4 without E_ang, the robust stage walks 10 s and then falls",
           "[wang2009][claim]") {
-  const std::string path = std::string(GAITSYNTH_SOURCE_DIR) +
-                           "/data/wang2009/runs/stocky_fig4_without_ang_robust/"
-                           "wang2009_stocky.controller.json";
-  const floating_model m = wang2009_humanoid(wang2009_shape::stocky);
-  wang2009_controller c(m);
-  const std::vector<double> p = load_wang2009_controller(path, c).parameters;
-  rollout_options opt = wang2009_rollout_options(m);
-  auto scratch = make_rollout_scratch(m);
-  auto walk_from = [&](const Eigen::VectorXd& dv) {
-    opt.initial_velocity_offset = dv;
-    wang2009_controller ck = c;
-    return rollout(m, mixed_pd_actuator{}, ck, distance_objective(), flat_terrain{},
-                   semi_implicit_euler{}, std::span<const double>(p), opt, scratch);
-  };
+  const std::string file = "runs/stocky_fig4_without_ang_robust/wang2009_stocky.controller.json";
 #ifdef GAITSYNTH_SANITIZED_BUILD
-  opt.duration = 10.0;
-  CHECK(walk_from(Eigen::VectorXd()).reason == stop_reason::horizon);
+  CHECK(walk_saved_from_starts(file, 10.0, 0, false)[0].reason == stop_reason::horizon);
   return;
 #endif
-  opt.duration = 100.0;
-  const rollout_result own = walk_from(Eigen::VectorXd());
+  const std::vector<rollout_result> r = walk_saved_from_starts(file, 100.0, 10, false);
+  const rollout_result& own = r[0];
   INFO("own start: " << to_string(own.reason) << " after " << own.time << " s");
   CHECK(own.reason == stop_reason::fell);
   CHECK(own.time >= 10.0);  // 18.6 s in CI's build; when exactly is rounding, that it falls is not
-  int after_horizon = 0, before_100 = 0, k = 0;
-  for (const Eigen::VectorXd& dv : joint_velocity_perturbations(m, 10, 0.05, 2009)) {
-    const rollout_result r = walk_from(dv);
-    UNSCOPED_INFO("perturbed start " << k++ << ": " << to_string(r.reason) << " after " << r.time
-                                     << " s");
-    after_horizon += r.time >= 10.0;
-    before_100 += r.reason != stop_reason::horizon;
+  int after_horizon = 0, before_100 = 0;
+  for (std::size_t k = 1; k < r.size(); ++k) {
+    UNSCOPED_INFO("perturbed start " << k - 1 << ": " << to_string(r[k].reason) << " after "
+                                     << r[k].time << " s");
+    after_horizon += r[k].time >= 10.0;
+    before_100 += r[k].reason != stop_reason::horizon;
   }
   CHECK(after_horizon >= 8);
   CHECK(before_100 >= 8);
@@ -494,38 +505,22 @@ TEST_CASE("wang2009: Fig. 4 without E_ang, the robust stage walks 10 s and then 
 // stage walks 100 s from 10 of 10 (above).
 TEST_CASE("wang2009: Fig. 4 without E_ang, the 30 s stage falls before 100 s",
           "[wang2009][claim]") {
-  const std::string path = std::string(GAITSYNTH_SOURCE_DIR) +
-                           "/data/wang2009/runs/stocky_fig4_without_ang_h30/"
-                           "wang2009_stocky.controller.json";
-  const floating_model m = wang2009_humanoid(wang2009_shape::stocky);
-  wang2009_controller c(m);
-  const std::vector<double> p = load_wang2009_controller(path, c).parameters;
-  rollout_options opt = wang2009_rollout_options(m);
-  auto scratch = make_rollout_scratch(m);
-  auto walk_from = [&](const Eigen::VectorXd& dv) {
-    opt.initial_velocity_offset = dv;
-    wang2009_controller ck = c;
-    return rollout(m, mixed_pd_actuator{}, ck, distance_objective(), flat_terrain{},
-                   semi_implicit_euler{}, std::span<const double>(p), opt, scratch);
-  };
+  const std::string file = "runs/stocky_fig4_without_ang_h30/wang2009_stocky.controller.json";
 #ifdef GAITSYNTH_SANITIZED_BUILD
-  opt.duration = 10.0;
-  CHECK(walk_from(Eigen::VectorXd()).reason == stop_reason::horizon);
+  CHECK(walk_saved_from_starts(file, 10.0, 0, true)[0].reason == stop_reason::horizon);
   return;
 #endif
-  opt.duration = 100.0;
-  opt = walk_options(opt);  // a stall is not a walk (rollout/walk_check.hpp)
-  const rollout_result own = walk_from(Eigen::VectorXd());
+  const std::vector<rollout_result> r = walk_saved_from_starts(file, 100.0, 10, true);
+  const rollout_result& own = r[0];
   INFO("own start: " << to_string(own.reason) << " after " << own.time << " s");
   CHECK(!walked(own));
   CHECK(own.time >= 30.0);  // 50.6 s in CI's build; when exactly is rounding, that it falls is not
-  int walking = 0, after_horizon = 0, k = 0;
-  for (const Eigen::VectorXd& dv : joint_velocity_perturbations(m, 10, 0.05, 2009)) {
-    const rollout_result r = walk_from(dv);
-    UNSCOPED_INFO("perturbed start " << k++ << ": " << to_string(r.reason) << " after " << r.time
-                                     << " s");
-    walking += walked(r);
-    after_horizon += r.time >= 30.0;
+  int walking = 0, after_horizon = 0;
+  for (std::size_t k = 1; k < r.size(); ++k) {
+    UNSCOPED_INFO("perturbed start " << k - 1 << ": " << to_string(r[k].reason) << " after "
+                                     << r[k].time << " s");
+    walking += walked(r[k]);
+    after_horizon += r[k].time >= 30.0;
   }
   CHECK(walking <= 2);        // 0 of 10 in CI's build
   CHECK(after_horizon >= 8);  // 10 of 10: they fall at 34-48 s
