@@ -19,6 +19,10 @@
 //                 paper's: a continuation stage may press one term harder)
 //                 [--bound PARAM=LO:HI]...  (a parameter's search bounds, e.g.
 //                 s1.target.back_y=-0.25:0.25; its start value must lie inside)
+//                 [--ratio-within TOL]  (ours: eq. 13's power ratio as a constraint, every
+//                 component within TOL of [0.43, 0.04, 0.53] on the unpushed rollout; a
+//                 candidate outside ranks below every one inside, by how far outside:
+//                 rollout/problem_with_constraint.hpp)
 //                 [--slope DEG] [--mu MU]   (uphill along +x; ground friction, default 10)
 //   wang2009_walk --replay FILE [--check-seconds S] [--out DIR]
 //                 (on the file's slope and friction, scored with the weights it was optimized
@@ -115,8 +119,9 @@ struct cli {
   std::vector<std::string> without;       // terms of eq. 16 left out (weight 0): Figs. 3 and 4
   std::map<std::string, double> weights;  // --weight TERM=W: weights of eq. 16 set by hand
   std::map<std::string, std::pair<double, double>> bounds;  // --bound PARAM=LO:HI
-  double slope_deg = 0.0;  // uphill slope along +x (Sec. 5, "Changing terrain")
-  double mu = 10.0;        // ground friction (Sec. 4.2; 0.8 and 0.3 in Sec. 5)
+  std::optional<double> ratio_within;  // --ratio-within TOL: E_ratio's r as a constraint (ours)
+  double slope_deg = 0.0;              // uphill slope along +x (Sec. 5, "Changing terrain")
+  double mu = 10.0;                    // ground friction (Sec. 4.2; 0.8 and 0.3 in Sec. 5)
   bool slope_given = false, mu_given = false;
   bool mpi = false;        // --mpi: evaluate on the processes of MPI_COMM_WORLD
   std::string command;     // the command line, kept in the saved controller
@@ -179,6 +184,10 @@ cli parse(int argc, char** argv) {
       ->check(example_cli::name_equals_number());
   app.add_option("--bound", bounds, "PARAM=LO:HI: a parameter's search bounds (repeatable)")
       ->check(example_cli::name_equals_number(true));
+  app.add_option("--ratio-within", c.ratio_within,
+                 "TOL: rank every candidate whose power ratio (eq. 13, unpushed rollout) has a "
+                 "component more than TOL from [0.43, 0.04, 0.53] below every one within (ours)")
+      ->check(example_cli::in_range(1e-6, 1.0));
   app.add_option("--slope", c.slope_deg, "uphill slope along +x, degrees")
       ->check(example_cli::in_range(-44.9, 44.9));
   app.add_option("--mu", c.mu, "ground friction (Sec. 4.2: 10)")
@@ -237,6 +246,7 @@ void save(const fs::path& path, const cli& c, const wang2009_controller& ctrl,
   s.info["without"] = c.without;
   s.info["weights"] = c.weights;
   s.info["bounds"] = c.bounds;
+  if (c.ratio_within) s.info["ratio_within"] = *c.ratio_within;
   s.info["slope_deg"] = c.slope_deg;
   s.info["mu"] = c.mu;
   save_wang2009_controller(path.string(), ctrl, s);
@@ -517,10 +527,12 @@ int optimize_and_check(const floating_model& m, const cli& c, const wang2009_con
     thread_pool_evaluator pool(c.threads);
     optimize_with(problem, pool, before_iteration, save_mean);
   };
-  if (c.replay.empty() && c.iterations > 0) {
+  // The paper's problem, or with --ratio-within the same problem with the power ratio of its
+  // (unpushed) rollout as a constraint; either with the robust variants around it.
+  auto optimize_stage = [&](const auto& main) {
     if (c.robust_starts == 0 && c.robust_pushes == 0) {
       optimize(
-          prob, [](std::int64_t) {}, false);
+          main, [](std::int64_t) {}, false);
     } else {
       // Training perturbations are seeded apart from the check's (seed 2009 below), so the check
       // judges the walker on starts it was not optimized for.
@@ -534,12 +546,23 @@ int optimize_and_check(const floating_model& m, const cli& c, const wang2009_con
                                       .push_direction_step = c.push_direction_step < 0
                                                                  ? c.robust_pushes
                                                                  : c.push_direction_step};
-      auto robust = make_problem_with_variants(prob, robust_variants(prob, vo));
+      auto robust = make_problem_with_variants(main, robust_variants(prob, vo));
       const bool random_phase = c.push_phase == "random";
       auto redraw = [&](std::int64_t i) {
         if (random_phase) redraw_push_phases(robust.variants, prob, vo, push_phase_seed(c.seed, i));
       };
       optimize(robust, redraw, random_phase);
+    }
+  };
+  if (c.replay.empty() && c.iterations > 0) {
+    if (c.ratio_within) {
+      const wang2009::power_ratio term = obj.template part<wang2009_term::ratio>();
+      const double tol = *c.ratio_within;
+      optimize_stage(make_problem_with_constraint(prob, [term, tol](const auto& ctx) {
+        return term.violation(std::get<wang2009_term::ratio>(*ctx.states.objective), tol);
+      }));
+    } else {
+      optimize_stage(prob);
     }
   }
   if (served) return 0;

@@ -81,6 +81,7 @@
 #include "gaitsynth/rollout/policy_states.hpp"
 #include "gaitsynth/rollout/problem.hpp"
 #include "gaitsynth/rollout/problem_cost.hpp"
+#include "gaitsynth/rollout/problem_with_constraint.hpp"
 #include "gaitsynth/rollout/problem_with_variants.hpp"
 #include "gaitsynth/rollout/recorder.hpp"
 #include "gaitsynth/rollout/result.hpp"

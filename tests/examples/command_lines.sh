@@ -108,6 +108,10 @@ case "$mode" in
         expect 2 "--mu: must be in .*, got nan" -- "$exe" --mu nan
         expect 2 "--slope: must be in .*, got 50" -- "$exe" --slope 50
       fi
+      if grep -q -- "--ratio-within" <<<"$help"; then
+        expect 2 "--ratio-within: must be in .*, got 0" -- "$exe" --ratio-within 0
+        expect 2 "--ratio-within: must be in .*, got nan" -- "$exe" --ratio-within nan
+      fi
       if grep -q -- "--seed" <<<"$help"; then
         expect 2 "--seed: must be in .*, got -3" -- "$exe" --seed -3
       fi

@@ -512,6 +512,23 @@ TEST_CASE("wang2009: E_ratio of hip, knee and ankle power (eqs. 13-15)", "[objec
   std::array<double, 4> t{};
   ratio.terms(a, t);
   CHECK(t[3] == Approx(0.53));
+  // The ratio as a constraint (ours): the largest excess over the tolerance, 0 inside. On the
+  // target: 0 for any tolerance; knees only: the knee's |1 - 0.04| - 0.05.
+  CHECK(ratio.violation(a, 0.05) == 0.0);
+  CHECK(ratio.violation(a, 0.0) == Approx(0.0).margin(1e-15));
+  CHECK(ratio.violation(b, 0.05) == Approx(0.96 - 0.05));
+  CHECK(ratio.violation(b, 2.0) == 0.0);
+  // r = [43 + 9, 4, 53] / 109 = [0.4771, 0.0367, 0.4862]: the hip is 0.0471 off, the ankle 0.0438.
+  s.tau.setZero();
+  s.tau[j("lhip_y")] = 5, s.tau[j("rhip_y")] = -3, s.tau[j("lhip_x")] = 3, s.tau[j("rhip_x")] = 3;
+  s.tau[j("lknee")] = 2;
+  s.tau[j("lankle_y")] = 7, s.tau[j("rankle_y")] = -2;
+  auto d = ratio.make_accumulator(m);
+  s.feed(ratio, d, 0);
+  CHECK(ratio.violation(d, 0.05) == 0.0);
+  CHECK(ratio.violation(d, 0.04) == Approx(52.0 / 109.0 - 0.43 - 0.04));
+  CHECK_THROWS_WITH(ratio.violation(d, -0.01), Catch::Contains("-0.01"));
+  CHECK_THROWS_WITH(ratio.violation(d, std::nan("")), Catch::Contains("tolerance"));
   CHECK_THROWS_WITH(w9::power_ratio(sharon2005_human7()), Catch::Contains("lhip_x"));
 }
 

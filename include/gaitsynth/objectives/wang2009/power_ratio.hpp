@@ -91,6 +91,18 @@ class power_ratio {
     return std::sqrt(s);
   }
 
+  /// How far r lies outside the box |r_i - target_i| <= tolerance: the largest excess, 0 inside
+  /// (ours: the ratio as a constraint, rollout/problem_with_constraint.hpp, where eq. 15's penalty
+  /// gives way to other terms). \throws std::invalid_argument for a tolerance not finite and >= 0.
+  double violation(const accumulator_type& a, double tolerance) const {
+    check_argument(std::isfinite(tolerance) && tolerance >= 0.0,
+                   "wang2009::power_ratio: tolerance must be finite and >= 0, got ", tolerance);
+    const std::array<double, 3> r = ratio(a);
+    double v = 0.0;
+    for (int i = 0; i < 3; ++i) v = std::max(v, std::abs(r[i] - opt_.target[i]) - tolerance);
+    return v;
+  }
+
   /// Running values: E_ratio and r (hip, knee, ankle).
   static std::array<std::string_view, 4> term_names() {
     return {"E_ratio", "r_hip", "r_knee", "r_ankle"};
