@@ -556,6 +556,35 @@ TEST_CASE("wang2009: Fig. 4's walker with E_ang from 30 s evaluations walks 100 
                 25.0});
 }
 
+// Fig. 4 from one start, E_ang the only difference (session 32). The 30 s stage above, run from
+// the start the other side used: with E_ang from the walker made without it (whose own 30 s stage
+// without E_ang falls at 50.6 s, above), and without E_ang from the E_ang run's restart (whose
+// own 30 s stage with E_ang walks 100 s, above); data/wang2009/runs/stocky_fig4_*_same_start/.
+// From the without-E_ang start, E_ang decides between walking 100 s and falling, the paper's
+// contrast; from the E_ang start, both walk 100 s.
+TEST_CASE("wang2009: Fig. 4 with E_ang from the without-E_ang start walks 100 s",
+          "[wang2009][claim]") {
+  check_walker({"stocky_fig4_with_ang_h30_same_start.controller.json",
+                1.916,
+                0.538,
+                {0.619, 0.054, 0.327},
+                10,
+                {false, false},
+                false,
+                29.8});
+}
+TEST_CASE("wang2009: Fig. 4 without E_ang from the E_ang start walks 100 s too",
+          "[wang2009][claim]") {
+  check_walker({"stocky_fig4_without_ang_h30_same_start.controller.json",
+                1.792,
+                0.686,
+                {0.807, 0.056, 0.137},
+                10,
+                {false, false},
+                false,
+                49.0});
+}
+
 // Fig. 3's set-up (short, 1.0 m/s) with and without E_ratio.
 TEST_CASE("wang2009: Fig. 3's walker with E_ratio walks 100 s", "[wang2009][claim]") {
   check_walker({"short_fig3_with_ratio.controller.json",
@@ -645,10 +674,20 @@ TEST_CASE("wang2009: Fig. 4, E_ang swings the arms with the opposite legs", "[wa
   // The one from 30 s evaluations walks 100 s too and keeps the swing.
   const double with_ang_h30 =
       opposite_leg_correlation("walkers/stocky_fig4_with_ang_h30.controller.json");
+  // The same stage from the other side's start: the swing follows the start, not the stage.
+  const double with_ang_from_without =
+      opposite_leg_correlation("walkers/stocky_fig4_with_ang_h30_same_start.controller.json");
+  const double without_ang_from_with =
+      opposite_leg_correlation("walkers/stocky_fig4_without_ang_h30_same_start.controller.json");
   INFO("with E_ang " << with_ang << ", without " << without_ang << ", with E_ang (robust stage) "
-                     << with_ang_robust << ", with E_ang (30 s evaluations) " << with_ang_h30);
+                     << with_ang_robust << ", with E_ang (30 s evaluations) " << with_ang_h30
+                     << "; 30 s stage with E_ang from the without-E_ang start "
+                     << with_ang_from_without << ", without E_ang from the E_ang start "
+                     << without_ang_from_with);
   CHECK(with_ang == Approx(0.82).margin(0.02));
   CHECK(without_ang == Approx(0.33).margin(0.02));
   CHECK(with_ang_robust == Approx(0.24).margin(0.02));
   CHECK(with_ang_h30 == Approx(0.70).margin(0.02));
+  CHECK(with_ang_from_without == Approx(0.11).margin(0.02));
+  CHECK(without_ang_from_with == Approx(0.81).margin(0.02));
 }
