@@ -1,11 +1,15 @@
 // World-frame servos (controllers/fsm/world_servo.hpp): per axis kp (target - angle) - kd omega
 // in the heading frame, checked against the formula written out here, for full servos and for
-// the coronal-only servos of Wang et al. 2012 Sec. 4.4, whose free axes skip their atan2.
+// servos with free axes (the coronal-only servos of Wang et al. 2012 Sec. 4.4, the feet of Wang et
+// al. 2009 without transverse stiffness), whose free axes skip their atan2.
 #include <Eigen/Geometry>
 #include <catch2/catch.hpp>
 #include <vector>
 
 #include "gaitsynth/controllers/fsm/world_servo.hpp"
+#include "gaitsynth/dynamics/kinematics.hpp"
+#include "gaitsynth/model/state.hpp"
+#include "gaitsynth/models/wang2009.hpp"
 #include "support/same_bits.hpp"
 
 using namespace gaitsynth;
@@ -27,12 +31,15 @@ vec3 servo_by_definition(const mat3& R, const vec3& omega, const world_servo_gai
 }
 }  // namespace
 
-TEST_CASE("body_coronal_angle is body_world_angles' coronal angle to the bit", "[spatial]") {
+TEST_CASE("body_coronal_angle and body_sagittal_angle are body_world_angles' angles to the bit",
+          "[spatial]") {
   for (double heading : {0.0, 0.7, -2.1})
     for (double a : {-0.9, -0.1, 0.0, 0.3, 1.2}) {
       const mat3 R = rot(2, heading + 0.2) * rot(1, 0.5 * a) * rot(0, a);
       CHECK(same_bits_unless_fused(body_coronal_angle(R, heading),
                                    body_world_angles(R, heading).coronal));
+      CHECK(same_bits_unless_fused(body_sagittal_angle(R, heading),
+                                   body_world_angles(R, heading).sagittal));
     }
 }
 
@@ -53,8 +60,12 @@ TEST_CASE("world servos: full and coronal-only gains give the definition's torqu
   coronal.target = {-0.15, 0.3, 0.0};  // a free axis' target does nothing
   world_servo_gains coronal_damped = coronal;
   coronal_damped.kd = {20.0, 5.0, 2.0};  // damping still acts on the free axes
+  world_servo_gains foot = full;         // a foot servo: no transverse stiffness
+  foot.kp[2] = 0.0;
+  world_servo_gains transverse = full;  // the transverse angle alone
+  transverse.kp[0] = transverse.kp[1] = 0.0;
   for (double heading : {0.0, 0.4}) {
-    for (const world_servo_gains& g : {full, coronal, coronal_damped}) {
+    for (const world_servo_gains& g : {full, coronal, coronal_damped, foot, transverse}) {
       const vec3 t = world_servo_torque(s, 0, g, heading);
       const vec3 expected = servo_by_definition(rotations[0], omegas[0], g, heading);
       INFO("heading " << heading << ", kp " << g.kp[0] << " " << g.kp[1] << " " << g.kp[2]);
@@ -67,4 +78,40 @@ TEST_CASE("world servos: full and coronal-only gains give the definition's torqu
   const vec3 t = world_servo_torque(s, 0, coronal, 0.0);
   CHECK(t.y() == 0.0);
   CHECK(t.z() == 0.0);
+}
+
+TEST_CASE("dof_world_axis: a DOF turns its body about that world axis, with or without a workspace",
+          "[controllers][world_servo]") {
+  // Independent of both ways of computing it: moving DOF j by d turns its body by d about the
+  // DOF's world axis (R_b(q + d e_j) R_b(q)^T is that rotation exactly), read back as angle-axis.
+  const floating_model m = wang2009_humanoid();
+  sim_state st = make_state(m);
+  st.q[2] = 1.0;
+  const Eigen::Vector4d root = Eigen::Vector4d(0.9, 0.2, -0.3, 0.25).normalized();
+  st.q.segment<4>(3) = root;
+  const int nj = m.num_joint_dofs();
+  for (int j = 0; j < nj; ++j) st.q[floating_root::nq + j] = 0.4 * std::sin(1.7 * j + 0.3);
+  auto ws = make_workspace(m);
+  forward_kinematics(m, ws, st.q, st.v);
+  sensors<floating_root> by_hand{};  // no workspace: composed from the joint angles
+  by_hand.model_ptr = &m;
+  by_hand.q_ptr = &st.q;
+  by_hand.v_ptr = &st.v;
+  by_hand.body_rotation = ws.body_rotation;
+  sensors<floating_root> in_rollout = by_hand;  // as the rollout fills it
+  in_rollout.workspace_ptr = &ws;
+  auto turned_ws = make_workspace(m);
+  const double d = 1e-6;
+  for (int j = 0; j < nj; ++j) {
+    sim_state turned = st;
+    turned.q[floating_root::nq + j] += d;
+    forward_kinematics(m, turned_ws, turned.q, turned.v);
+    const int b = m.dofs[j].body;
+    const Eigen::AngleAxisd turn(turned_ws.body_rotation[b] * ws.body_rotation[b].transpose());
+    const vec3 expected = turn.axis() * (turn.angle() / d);
+    INFO("DOF " << j << " (" << m.dofs[j].name << ")");
+    CHECK((dof_world_axis(by_hand, j) - expected).norm() < 1e-8);
+    CHECK((dof_world_axis(in_rollout, j) - expected).norm() < 1e-8);
+    CHECK((dof_world_axis(in_rollout, j) - dof_world_axis(by_hand, j)).norm() < 1e-14);
+  }
 }

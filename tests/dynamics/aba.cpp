@@ -51,7 +51,8 @@ TEMPLATE_TEST_CASE("aba equals M^-1 (tau - bias + J^T f_ext) on random trees", "
     for (int b = 0; b < m.num_bodies(); ++b) {
       point_jacobian(m, ws2, q, b, vec3::Zero(), Jp);
       body_orientation_jacobian(m, ws2, q, b, Jr);
-      gen_ext += Jp.transpose() * ws.f_ext[b].template tail<3>() + Jr.transpose() * ws.f_ext[b].template head<3>();
+      gen_ext += Jp.transpose() * ws.f_ext[b].template tail<3>() +
+                 Jr.transpose() * ws.f_ext[b].template head<3>();
     }
     const Eigen::VectorXd ddq_ext = aba(m, ws, q, v, tau);
     const Eigen::VectorXd expected_ext = M.llt().solve(tau - h + gen_ext);
@@ -93,8 +94,12 @@ TEST_CASE("single pendulum: ddq = -g/l sin q (point mass) with the physical pend
   for (const vec3& axis : {vec3(0, 1, 0), vec3(1, 0, 0), vec3(0, -1, 0)}) {
     model_builder<fixed_root> b("pendulum");
     b.add_body({.name = "base", .mass = 1.0, .inertia = mat3::Identity()});
-    b.add_body({.name = "bob", .parent = "base", .joint_offset = vec3(0.1, 0.2, 0.3),
-                .mass = mass, .com = vec3(0, 0, -l), .inertia = Ic * mat3::Identity(),
+    b.add_body({.name = "bob",
+                .parent = "base",
+                .joint_offset = vec3(0.1, 0.2, 0.3),
+                .mass = mass,
+                .com = vec3(0, 0, -l),
+                .inertia = Ic * mat3::Identity(),
                 .dofs = {{.name = "hinge", .axis = axis}}});
     const auto m = b.build();
     auto ws = make_workspace(m);
@@ -119,10 +124,19 @@ TEST_CASE("double pendulum matches the textbook equations of motion", "[dynamics
   model_builder<fixed_root> b("double_pendulum");
   b.add_body({.name = "base", .mass = 1.0, .inertia = mat3::Identity()});
   const mat3 tiny = 1e-9 * mat3::Identity();
-  b.add_body({.name = "l1", .parent = "base", .mass = m1, .com = vec3(0, 0, -l1), .inertia = tiny,
+  b.add_body({.name = "l1",
+              .parent = "base",
+              .mass = m1,
+              .com = vec3(0, 0, -l1),
+              .inertia = tiny,
               .dofs = {{.name = "h1"}}});
-  b.add_body({.name = "l2", .parent = "l1", .joint_offset = vec3(0, 0, -l1), .mass = m2,
-              .com = vec3(0, 0, -l2), .inertia = tiny, .dofs = {{.name = "h2"}}});
+  b.add_body({.name = "l2",
+              .parent = "l1",
+              .joint_offset = vec3(0, 0, -l1),
+              .mass = m2,
+              .com = vec3(0, 0, -l2),
+              .inertia = tiny,
+              .dofs = {{.name = "h2"}}});
   const auto m = b.build();
   auto ws = make_workspace(m);
   (void)eps;
@@ -134,8 +148,7 @@ TEST_CASE("double pendulum matches the textbook equations of motion", "[dynamics
   // Absolute angles phi1 = t1, phi2 = t1 + t2. Textbook form in absolute angles:
   const double p1 = t1, p2 = t1 + t2, pd1 = w1, pd2 = w1 + w2, d = p1 - p2;
   Eigen::Matrix2d Ma;
-  Ma << (m1 + m2) * l1 * l1, m2 * l1 * l2 * std::cos(d), m2 * l1 * l2 * std::cos(d),
-      m2 * l2 * l2;
+  Ma << (m1 + m2) * l1 * l1, m2 * l1 * l2 * std::cos(d), m2 * l1 * l2 * std::cos(d), m2 * l2 * l2;
   Eigen::Vector2d rhs(-m2 * l1 * l2 * pd2 * pd2 * std::sin(d) - (m1 + m2) * g * l1 * std::sin(p1),
                       m2 * l1 * l2 * pd1 * pd1 * std::sin(d) - m2 * g * l2 * std::sin(p2));
   const Eigen::Vector2d pdd = Ma.inverse() * rhs;  // tiny rotational inertia ignored (1e-9)
@@ -144,7 +157,8 @@ TEST_CASE("double pendulum matches the textbook equations of motion", "[dynamics
   REQUIRE(ddq[1] == Approx(pdd[1] - pdd[0]).epsilon(1e-6));
 }
 
-TEST_CASE("a free rigid body falls with g and spins by Euler's equations", "[dynamics][aba][analytic]") {
+TEST_CASE("a free rigid body falls with g and spins by Euler's equations",
+          "[dynamics][aba][analytic]") {
   std::mt19937 rng(7);
   std::mt19937_64 configuration_rng(7);  // random_configuration takes the portable engine
   model_builder<floating_root> b("brick");
@@ -188,7 +202,8 @@ TEST_CASE("planar root: a free body in the x-z plane falls and keeps its pitch r
   const Eigen::VectorXd ddq = aba(m, ws, q, v, tau);
   // The COM falls with g; the pitch acceleration is zero (no torque about the COM). The root origin
   // is not the COM, so its acceleration has a centripetal part: a_o = g - (pitch rate)^2 ... check
-  // through the COM instead: c = o + R c_b, cddot = oddot + R (w x (w x c_b)) with w = pitchdot e_y.
+  // through the COM instead: c = o + R c_b, cddot = oddot + R (w x (w x c_b)) with w = pitchdot
+  // e_y.
   REQUIRE(ddq[2] == Approx(0.0).margin(1e-12));
   const double s = std::sin(q[2]), c = std::cos(q[2]);
   mat3 R;
@@ -220,4 +235,50 @@ TEST_CASE("dynamics are invariant under translating the whole system far from th
   ws.f_ext[3] = f3;  // the wrench is about the body origin, so it moves with the body
   REQUIRE_THAT(aba(m, ws, q, v, tau), is_approx(a0, 1e-12, 1e-12));
   REQUIRE_THAT(crba(m, ws, q), is_approx(M0, 1e-13, 1e-13));
+}
+
+TEMPLATE_TEST_CASE("aba by joints and by single-DOF nodes solve the same equation",
+                   "[dynamics][aba]", planar_root, floating_root, fixed_root) {
+  // Two recursions of the same algorithm (aba_by_joint.hpp: a body's 1-3 DOFs as one joint;
+  // aba.hpp's passes: one node per DOF with massless bodies between), each also checked against
+  // CRBA's M: they agree to rounding, with external wrenches and with an armature. (The node
+  // passes remain the path of a model built by hand with a body of more than three DOFs.)
+  std::mt19937 rng(77);
+  std::mt19937_64 configuration_rng(77);
+  for (int trial = 0; trial < 10; ++trial) {
+    gaitsynth::testing::random_model_options o;
+    o.num_bodies = 2 + trial % 8;
+    o.branching = trial % 2 == 1;
+    o.random_axes = trial % 3 != 0;
+    const auto m = gaitsynth::testing::random_model<TestType>(rng, o);
+    auto by_joint = make_workspace(m);
+    auto by_node = make_workspace(m);
+    disable_planar_path(by_joint);
+    disable_planar_path(by_node);
+    REQUIRE(by_joint.scratch.joints.enabled);
+    by_node.scratch.joints.enabled = false;
+    const Eigen::VectorXd q = random_configuration(m, configuration_rng);
+    const Eigen::VectorXd v = gaitsynth::testing::random_vector(rng, m.nv(), 2.0);
+    const Eigen::VectorXd tau = gaitsynth::testing::random_vector(rng, m.nv(), 10.0);
+    const Eigen::VectorXd armature =
+        gaitsynth::testing::random_vector(rng, m.num_joint_dofs(), 0.05).cwiseAbs();
+    forward_kinematics(m, by_joint, q, v);
+    random_wrenches(rng, by_joint);
+    by_node.f_ext = by_joint.f_ext;
+    CAPTURE(trial, m.nv());
+    const Eigen::VectorXd a_joint = aba(m, by_joint, q, v, tau);
+    REQUIRE_THAT(a_joint, is_approx(aba(m, by_node, q, v, tau), 1e-11));
+    const Eigen::VectorXd b_joint = aba(m, by_joint, q, v, tau, armature);
+    REQUIRE_THAT(b_joint, is_approx(aba(m, by_node, q, v, tau, armature), 1e-11));
+    // The armature's equation, (M + diag(0, a)) ddq = tau - C, by CRBA and RNEA.
+    auto ws = make_workspace(m);
+    Eigen::MatrixXd M = crba(m, ws, q);
+    M.diagonal().tail(m.num_joint_dofs()) += armature;
+    forward_kinematics(m, ws, q, v);
+    ws.f_ext = by_joint.f_ext;
+    const Eigen::VectorXd lhs = M * b_joint;
+    const Eigen::VectorXd rhs =
+        tau - (rnea_with_external(m, ws, q, v, b_joint) - crba(m, ws, q) * b_joint);
+    REQUIRE_THAT(lhs, is_approx(rhs, 1e-9));
+  }
 }

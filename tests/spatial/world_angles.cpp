@@ -3,6 +3,8 @@
 // joints' (a forward-swung thigh is negative, toes-down is positive).
 #include <Eigen/Geometry>
 #include <catch2/catch.hpp>
+#include <cmath>
+#include <cstdint>
 #include <numbers>
 
 #include "gaitsynth/spatial/world_angles.hpp"
@@ -67,4 +69,37 @@ TEST_CASE("world angles: the tilt from the vertical ignores heading and lean dir
         CHECK(gaitsynth::tilt_from_vertical(R.col(2)) == Approx(lean).margin(1e-12));
       }
   CHECK(gaitsynth::tilt_from_vertical(-Eigen::Vector3d::UnitZ()) == Approx(std::numbers::pi));
+}
+
+TEST_CASE("world_angles_norm_exceeds answers as the definition does, near the limit too",
+          "[spatial]") {
+  // Random rotations at every scale (well inside, near and far beyond 0.1 rad, facing backwards
+  // and upside down) and rotations whose norm is the limit to the last bits: the bounds must
+  // never decide a case the definition decides the other way.
+  std::uint64_t state = 12345;
+  auto uniform = [&state] {  // splitmix64, so the case list is the same on every platform
+    state += 0x9e3779b97f4a7c15ULL;
+    std::uint64_t z = state;
+    z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
+    z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
+    return static_cast<double>((z ^ (z >> 31)) >> 11) * 0x1.0p-53;
+  };
+  for (const double scale : {0.01, 0.05, 0.08, 0.1, 0.12, 0.3, 1.0, 3.0}) {
+    for (int k = 0; k < 400; ++k) {
+      const mat3 R = rot(2, scale * (2.0 * uniform() - 1.0)) *
+                     rot(1, scale * (2.0 * uniform() - 1.0)) *
+                     rot(0, scale * (2.0 * uniform() - 1.0));
+      for (const double limit : {0.1, 0.0, 0.5}) {
+        INFO("scale " << scale << ", case " << k << ", limit " << limit);
+        CHECK(world_angles_norm_exceeds(R, limit) == (body_world_angles(R).norm() > limit));
+      }
+    }
+  }
+  // On the limit: the norm of a rotation about one axis by exactly the limit, and one ulp apart.
+  for (int axis = 0; axis < 3; ++axis) {
+    const mat3 R = rot(axis, 0.1);
+    const double norm = body_world_angles(R).norm();
+    for (const double limit : {norm, std::nextafter(norm, 0.0), std::nextafter(norm, 1.0), 0.1})
+      CHECK(world_angles_norm_exceeds(R, limit) == (norm > limit));
+  }
 }

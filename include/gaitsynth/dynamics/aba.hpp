@@ -6,6 +6,7 @@
 #include <Eigen/Cholesky>
 #include <cmath>
 
+#include "gaitsynth/dynamics/aba_by_joint.hpp"
 #include "gaitsynth/dynamics/kinematics.hpp"
 
 namespace gaitsynth {
@@ -61,6 +62,91 @@ Eigen::Matrix<double, N, 1> solve_spd(const Eigen::Matrix<double, N, N>& A,
   return x;
 }
 
+/// The root's acceleration from its articulated inertia IA[0] and bias pA[0] (ABA's pass 2 done):
+/// writes the root's ddq and s.A[0].
+template <root_joint Root>
+void aba_root(const model<Root>& m, workspace<Root>& ws,
+              const Eigen::Ref<const Eigen::VectorXd>& tau) {
+  auto& s = ws.scratch;
+  constexpr int nvr = Root::nv;
+  const svec a_base = base_acceleration(m);
+  if constexpr (std::is_same_v<Root, floating_root>) {
+    // A free root's S0 = [0 R; 1 0] is orthogonal (S0^-T = S0), so the equation below,
+    // (S0^T IA0 S0) ddq_r = tau_r - S0^T f0, is IA0 z = S0 tau_r - f0 with ddq_r = S0^T z, and
+    // the root's acceleration is a_pre + S0 ddq_r = a_pre + z: one 6 x 6 solve in world axes,
+    // without forming S0^T IA0 S0.
+    const svec a_pre = a_base + s.C[0];
+    const vec6 f0 = to_vec6(s.pA[0] + op_times(s.IA[0], a_pre));
+    const vec6 z = solve_spd<6>(to_mat6(s.IA[0]), s.S0 * tau.template head<6>() - f0);
+    ws.ddq.template head<6>() = s.S0.transpose() * z;
+    s.A[0] = a_pre;
+    s.A[0].template head<6>() += z;
+  } else if constexpr (nvr > 0) {
+    // Root: a0 = a_base + c0 + S0 ddq_r and S0^T (IA0 a0 + pA0) = tau_r, so
+    // (S0^T IA0 S0) ddq_r = tau_r - S0^T (pA0 + IA0 (a_base + c0)).
+    using S0_t = typename detail::dynamics_scratch<Root>::root_subspace;
+    const S0_t& S0 = s.S0;
+    const svec a_pre = a_base + s.C[0];
+    const mat6 IA0 = to_mat6(s.IA[0]);
+    const Eigen::Matrix<double, 6, nvr> IS = IA0 * S0;
+    const Eigen::Matrix<double, nvr, nvr> D = S0.transpose() * IS;
+    const vec6 f0 = to_vec6(s.pA[0] + op_times(s.IA[0], a_pre));
+    const Eigen::Matrix<double, nvr, 1> rhs = tau.template head<nvr>() - S0.transpose() * f0;
+    const Eigen::Matrix<double, nvr, 1> ddq_r = solve_spd<nvr>(D, rhs);
+    ws.ddq.template head<nvr>() = ddq_r;
+    const vec6 Sq = S0 * ddq_r;
+    s.A[0] = a_pre;
+    s.A[0].template head<6>() += Sq;
+  } else {
+    s.A[0] = a_base;
+  }
+}
+
+/// ABA passes 1-3 by joints (aba_by_joint.hpp; s.joints.enabled). Writes ws.ddq.
+template <root_joint Root>
+void aba_passes_by_joint(const model<Root>& m, workspace<Root>& ws,
+                         const Eigen::Ref<const Eigen::VectorXd>& tau, const double* armature) {
+  auto& s = ws.scratch;
+  const int nb = s.nb;
+  // Pass 1: each body's inertia and bias force p = v x* I v - f_ext at its joint's node.
+  for (int b = 0; b < nb; ++b) {
+    const int n = s.body_node[b];
+    s.IA[n] = s.body_I[b];
+    s.pA[n] = s.body_bias[b] - external_force_at_ref(ws, b);
+  }
+  // Pass 2 (backward, children before parents).
+  for (int b = nb - 1; b >= 1; --b) {
+    const body& bd = m.bodies[b];
+    switch (bd.num_dofs) {
+      case 1:
+        aba_joint_backward<1>(ws, b, bd.first_dof, tau, armature);
+        break;
+      case 2:
+        aba_joint_backward<2>(ws, b, bd.first_dof, tau, armature);
+        break;
+      default:
+        aba_joint_backward<3>(ws, b, bd.first_dof, tau, armature);
+        break;
+    }
+  }
+  aba_root(m, ws, tau);
+  // Pass 3 (forward).
+  for (int b = 1; b < nb; ++b) {
+    const body& bd = m.bodies[b];
+    switch (bd.num_dofs) {
+      case 1:
+        aba_joint_forward<1>(ws, b, bd.first_dof);
+        break;
+      case 2:
+        aba_joint_forward<2>(ws, b, bd.first_dof);
+        break;
+      default:
+        aba_joint_forward<3>(ws, b, bd.first_dof);
+        break;
+    }
+  }
+}
+
 /// ABA passes 2 and 3 (kinematics must be current). Writes ws.ddq. With `armature` (num_joint_dofs
 /// values >= 0, or nullptr for none) it solves (M + diag(armature)) ddq = tau - C instead: each
 /// DOF's D = S^T IA S gets its armature added (Featherstone 2008, sec. 7.3; Pinocchio's
@@ -70,6 +156,10 @@ template <root_joint Root>
 void aba_passes(const model<Root>& m, workspace<Root>& ws,
                 const Eigen::Ref<const Eigen::VectorXd>& tau, const double* armature = nullptr) {
   auto& s = ws.scratch;
+  if (s.joints.enabled) {
+    aba_passes_by_joint(m, ws, tau, armature);
+    return;
+  }
   constexpr int nvr = Root::nv;
   const int nn = s.nj + 1;
   // Pass 1 (the kinematic part, body inertias and v x* I v are in update_poses /
@@ -121,27 +211,7 @@ void aba_passes(const model<Root>& m, workspace<Root>& ws,
     smat& IAp = s.IA[p];
     for (int k = 0; k < 6; ++k) IAp[k] += IA[k] - U * DU[k];
   }
-  // Root and pass 3 (forward).
-  const svec a_base = base_acceleration(m);
-  if constexpr (nvr > 0) {
-    // Root: a0 = a_base + c0 + S0 ddq_r and S0^T (IA0 a0 + pA0) = tau_r, so
-    // (S0^T IA0 S0) ddq_r = tau_r - S0^T (pA0 + IA0 (a_base + c0)).
-    using S0_t = typename detail::dynamics_scratch<Root>::root_subspace;
-    const S0_t& S0 = s.S0;
-    const svec a_pre = a_base + s.C[0];
-    const mat6 IA0 = to_mat6(s.IA[0]);
-    const Eigen::Matrix<double, 6, nvr> IS = IA0 * S0;
-    const Eigen::Matrix<double, nvr, nvr> D = S0.transpose() * IS;
-    const vec6 f0 = to_vec6(s.pA[0] + op_times(s.IA[0], a_pre));
-    const Eigen::Matrix<double, nvr, 1> rhs = tau.template head<nvr>() - S0.transpose() * f0;
-    const Eigen::Matrix<double, nvr, 1> ddq_r = solve_spd<nvr>(D, rhs);
-    ws.ddq.template head<nvr>() = ddq_r;
-    const vec6 Sq = S0 * ddq_r;
-    s.A[0] = a_pre;
-    s.A[0].template head<6>() += Sq;
-  } else {
-    s.A[0] = a_base;
-  }
+  aba_root(m, ws, tau);  // and pass 3 (forward)
   for (int n = 1; n < nn; ++n) {
     const svec a = s.A[s.node_parent[n]] + s.C[n];
     const double qdd = s.Dinv[n] * (s.u[n] - sdot(s.U[n], a));

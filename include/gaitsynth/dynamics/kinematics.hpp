@@ -92,13 +92,21 @@ void update_poses(const model<Root>& m, workspace<Root>& ws, const Q& q) {
       const int kind = s.dof_axis_kind[j];
       vec3 w;  // world axis; invariant under its own rotation
       if (kind < 3) {
-        // Rotation about a coordinate axis e_k: only the other two columns of R mix.
+        // Rotation about a coordinate axis e_k: only the other two columns of R mix. The columns
+        // are named at compile time (a switch, not (k + 1) % 3), so R stays in registers.
         const double sg = s.dof_axis_sign[j], sn = sg * s.sin_q[j];
-        const int k1 = (kind + 1) % 3, k2 = (kind + 2) % 3;
-        w = sg * R.col(kind);
-        const vec3 r1 = R.col(k1), r2 = R.col(k2);
-        R.col(k1) = c * r1 + sn * r2;
-        R.col(k2) = c * r2 - sn * r1;
+        auto turn = [&]<int K, int K1, int K2>() {
+          w = sg * R.col(K);
+          const vec3 r1 = R.col(K1), r2 = R.col(K2);
+          R.col(K1) = c * r1 + sn * r2;
+          R.col(K2) = c * r2 - sn * r1;
+        };
+        if (kind == 0)
+          turn.template operator()<0, 1, 2>();
+        else if (kind == 1)
+          turn.template operator()<1, 2, 0>();
+        else
+          turn.template operator()<2, 0, 1>();
       } else {
         const vec3& a = m.dofs[j].axis;
         w = R * a;
@@ -109,7 +117,12 @@ void update_poses(const model<Root>& m, workspace<Root>& ws, const Q& q) {
     ws.body_rotation[b] = R;
     s.body_rel[b] = rel;
     ws.body_position[b] = p0 + rel;
-    s.body_inertia[b] = {bd.mass, rel + R * bd.com, R * bd.inertia * R.transpose()};
+    // Principal axes (every box of the humanoids): R diag(I) R^T, a third fewer products.
+    if (s.body_inertia_principal[b])
+      s.body_inertia[b] = {bd.mass, rel + R * bd.com,
+                           R * bd.inertia.diagonal().asDiagonal() * R.transpose()};
+    else
+      s.body_inertia[b] = {bd.mass, rel + R * bd.com, R * bd.inertia * R.transpose()};
     // The 6x6 inertia is independent work that fills the gaps of the latency-bound rotation chain.
     inertia_matrix(s.body_inertia[b], s.body_I[b]);
   }

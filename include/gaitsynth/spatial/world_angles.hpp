@@ -54,7 +54,36 @@ inline double body_coronal_angle(const mat3& R, double heading = 0.0) {
   const vec3 up = to_heading_frame(R.col(2), heading);
   return std::atan2(-up.y(), up.z());
 }
+/// body_world_angles(R, heading).sagittal alone.
+inline double body_sagittal_angle(const mat3& R, double heading = 0.0) {
+  const vec3 up = to_heading_frame(R.col(2), heading);
+  return std::atan2(up.x(), up.z());
+}
 
+/// body_world_angles(R).norm() > limit (heading 0), the same answer for every R, with the three
+/// atan2 only where cheap bounds cannot decide: for b > 0, x = |a| / b and x <= 1,
+/// x - x^3 / 3 <= |atan2(a, b)| <= x, so the sum of the squared ratios bounds the squared norm from
+/// above and the sum of the squared lower bounds from below. A relative margin of 1e-9 (far above
+/// the rounding of either side) sends every R near the limit to the exact path. E_head counts
+/// this once per physics step, and the head is rarely near its 0.1 rad limit.
+inline bool world_angles_norm_exceeds(const mat3& R, double limit) {
+  const double uz = R(2, 2), fx = R(0, 0);
+  if (uz > 0.0 && fx > 0.0) {
+    const double x[3] = {std::abs(R(1, 2)) / uz, std::abs(R(0, 2)) / uz, std::abs(R(1, 0)) / fx};
+    const double l2 = limit * limit;
+    const double upper = x[0] * x[0] + x[1] * x[1] + x[2] * x[2];
+    if (upper <= l2 * (1.0 - 1e-9)) return false;
+    if (x[0] <= 1.0 && x[1] <= 1.0 && x[2] <= 1.0) {
+      double lower = 0.0;
+      for (const double xi : x) {
+        const double a = xi - xi * xi * xi / 3.0;
+        lower += a * a;
+      }
+      if (lower >= l2 * (1.0 + 1e-9)) return true;
+    }
+  }
+  return body_world_angles(R).norm() > limit;
+}
 /// The angle between a body's unit up vector (world; R.col(2)) and the world vertical, rad, in
 /// [0, pi]: its tilt, whichever way it leans.
 inline double tilt_from_vertical(const vec3& up) {

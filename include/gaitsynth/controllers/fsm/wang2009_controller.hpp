@@ -259,8 +259,7 @@ class wang2009_controller {
         next = st.phase + 1;
       else if (touchdown)
         next = (st.phase + 2) % 4;  // early contact
-    } else if (touchdown &&
-               body_world_angles(s.body_rotation[sw.foot]).sagittal < landing_foot_angle) {
+    } else if (touchdown && body_sagittal_angle(s.body_rotation[sw.foot]) < landing_foot_angle) {
       next = (st.phase + 1) % 4;
     }
     if (next == st.phase) return;

@@ -7,6 +7,8 @@
 /// force of a torque on the child body, by virtual work).
 #include <Eigen/Geometry>
 #include <array>
+#include <cstddef>
+#include <type_traits>
 
 #include "gaitsynth/controllers/sensors.hpp"
 #include "gaitsynth/model/model.hpp"
@@ -18,8 +20,16 @@ namespace gaitsynth {
 /// World axis of joint DOF j in the current pose: a body with DOFs f..l composed intrinsically
 /// (model/model.hpp) has R_world_body = R_world_parent R(a_f, q_f) ... R(a_l, q_l), so the axis
 /// of DOF k is R_world_body R(a_l, -q_l) ... R(a_k+1, -q_k+1) a_k.
+/// Under the rollout (sensors with a workspace, 6D kinematics of this step) the axis is read
+/// from the kinematics, which composed it on the way down the chain: the angular part of DOF j's
+/// motion subspace S_j (dynamics/kinematics.hpp), the same axis the dynamics apply tau_j about.
+/// Otherwise (sensors filled by hand) it is composed here.
 template <root_joint Root>
 vec3 dof_world_axis(const sensors<Root>& s, int j) {
+  if constexpr (!std::is_same_v<Root, planar_root>) {
+    if (s.workspace_ptr != nullptr && s.workspace_ptr->scratch.level >= 1)
+      return detail::ang(s.workspace_ptr->scratch.S[static_cast<std::size_t>(j) + 1]);
+  }
   const model<Root>& m = s.model();
   const joint_dof& d = m.dofs[j];
   const body& b = m.bodies[d.body];
@@ -43,17 +53,24 @@ template <root_joint Root>
 vec3 world_servo_torque(const sensors<Root>& s, int b, const world_servo_gains& g,
                         double heading = 0.0) {
   const vec3 w = to_heading_frame(s.body_angular_velocity[b], heading);
+  // kp (target - angle) is kp target on an axis without stiffness whatever the angle, so only the
+  // angles with a gain are measured (one atan2 each; a foot servo has no transverse gain, the
+  // coronal servos of Wang et al. 2012 Sec. 4.4 have one axis of three).
+  const mat3& R = s.body_rotation[b];
+  const vec3 up = to_heading_frame(R.col(2), heading);
   vec3 t;
-  if (g.kp[1] == 0.0 && g.kp[2] == 0.0) {
-    // A coronal servo (Wang et al. 2012 Sec. 4.4 has five per tick): kp (target - angle) is 0 on
-    // the free axes whatever the angle, so only the coronal angle's atan2 is computed.
-    t[0] =
-        g.kp[0] * (g.target[0] - body_coronal_angle(s.body_rotation[b], heading)) - g.kd[0] * w[0];
-    for (int a = 1; a < 3; ++a) t[a] = g.kp[a] * g.target[a] - g.kd[a] * w[a];
-    return to_heading_frame(t, -heading);
+  for (int a = 0; a < 3; ++a) {
+    double angle = 0.0;
+    if (g.kp[a] != 0.0) {
+      if (a < 2) {
+        angle = a == 0 ? std::atan2(-up.y(), up.z()) : std::atan2(up.x(), up.z());
+      } else {
+        const vec3 fwd = to_heading_frame(R.col(0), heading);
+        angle = std::atan2(fwd.y(), fwd.x());
+      }
+    }
+    t[a] = g.kp[a] * (g.target[a] - angle) - g.kd[a] * w[a];
   }
-  const world_angles th = body_world_angles(s.body_rotation[b], heading);
-  for (int a = 0; a < 3; ++a) t[a] = g.kp[a] * (g.target[a] - th[a]) - g.kd[a] * w[a];
   return to_heading_frame(t, -heading);
 }
 

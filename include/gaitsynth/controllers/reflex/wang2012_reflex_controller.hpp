@@ -283,7 +283,7 @@ class wang2012_reflex_controller {
   /// The torso's sagittal world angle `delay` ago (rad, + leaning forward).
   template <root_joint Root>
   double trunk_lean(const sensors<Root>& s, double delay, double heading) const {
-    return body_world_angles(s.delayed_body_rotation(layout_.torso, delay), heading).sagittal;
+    return body_sagittal_angle(s.delayed_body_rotation(layout_.torso, delay), heading);
   }
 
   options opt_;

@@ -76,7 +76,7 @@ class head {
     a.mean_vx += d / static_cast<double>(a.track.steps);
     a.m2 += d * (vx - a.mean_vx);
     a.vx = vx;
-    a.oriented += body_world_angles(R).norm() > opt_.max_angle ? 1 : 0;
+    a.oriented += world_angles_norm_exceeds(R, opt_.max_angle) ? 1 : 0;
   }
   /// sigma_head, m/s: population standard deviation of the head x velocity.
   static double velocity_std(const accumulator_type& a) {
