@@ -1,8 +1,9 @@
 // Dynamics algorithms on the built-in characters: the 7-link planar human of Sharon & van de Panne
 // 2005 and the 30-DOF 3D humanoid of Wang et al. 2009 (floating root, nv = 36).
-// Each iteration forces the kinematics to be recomputed (invalidate_kinematics) unless the name says
-// "cached", so the figures are for a fresh (q, v). Every case runs 5 repetitions and also reports
-// their minimum ("_min"): on a shared machine the minimum is the figure least disturbed by others.
+// Each iteration forces the kinematics to be recomputed (invalidate_kinematics) unless the name
+// says "cached", so the figures are for a fresh (q, v). Every case runs 5 repetitions and also
+// reports their minimum ("_min"): on a shared machine the minimum is the figure least disturbed by
+// others.
 #include <benchmark/benchmark.h>
 
 #include <algorithm>
@@ -44,6 +45,13 @@ fixture<planar_root>& human7() {
 }
 fixture<floating_root>& humanoid3d() {
   static fixture<floating_root> f(wang2009_humanoid());
+  return f;
+}
+// The same with ABA by joints (aba_by_joint.hpp, opt-in), the peer of the default single-DOF
+// node passes (aba.hpp).
+fixture<floating_root>& humanoid3d_by_joint() {
+  static fixture<floating_root> f(wang2009_humanoid());
+  enable_aba_by_joint(f.ws);
   return f;
 }
 
@@ -120,9 +128,8 @@ void BM_step_semi_implicit_euler(benchmark::State& st, Get get) {
   label(st, f);
 }
 void settings(benchmark::internal::Benchmark* b) {
-  b->Repetitions(5)->ComputeStatistics("min", [](const std::vector<double>& v) {
-    return *std::min_element(v.begin(), v.end());
-  });
+  b->Repetitions(5)->ComputeStatistics(
+      "min", [](const std::vector<double>& v) { return *std::min_element(v.begin(), v.end()); });
 }
 }  // namespace
 
@@ -132,6 +139,7 @@ BENCHMARK_CAPTURE(BM_aba, human7, human7)->Apply(settings);
 BENCHMARK_CAPTURE(BM_aba, humanoid3d, humanoid3d)->Apply(settings);
 BENCHMARK_CAPTURE(BM_aba_cached, human7, human7)->Apply(settings);
 BENCHMARK_CAPTURE(BM_aba_cached, humanoid3d, humanoid3d)->Apply(settings);
+BENCHMARK_CAPTURE(BM_aba_cached, humanoid3d_by_joint, humanoid3d_by_joint)->Apply(settings);
 BENCHMARK_CAPTURE(BM_rnea, human7, human7)->Apply(settings);
 BENCHMARK_CAPTURE(BM_rnea, humanoid3d, humanoid3d)->Apply(settings);
 BENCHMARK_CAPTURE(BM_crba, human7, human7)->Apply(settings);

@@ -124,7 +124,7 @@ BENCHMARK(BM_Rollout_Humanoid3D_SimbiconWalk10s)->Unit(benchmark::kMillisecond)-
 /// optimization (synthesis/wang2009_simulation.hpp: mu = 10, implicit joint dampers): one
 /// evaluation of a Wang 2009 optimization near its optimum.
 template <class Terrain>
-void bench_wang2009_walk(benchmark::State& state) {
+void bench_wang2009_walk(benchmark::State& state, bool aba_by_joint = false) {
   const std::string path =
       std::string(GAITSYNTH_SOURCE_DIR) + "/data/wang2009/walkers/stocky_table2.controller.json";
   const floating_model m = wang2009_humanoid(wang2009_preset(wang2009_saved_shape(path)));
@@ -134,6 +134,8 @@ void bench_wang2009_walk(benchmark::State& state) {
   const auto obj = wang2009_objective(m);
   const rollout_options opt = wang2009_rollout_options(m);
   auto scr = make_rollout_scratch(m);
+  // ABA by joints (dynamics/aba_by_joint.hpp, opt-in): the peer of the default node passes.
+  if (aba_by_joint) enable_aba_by_joint(scr.ws);
   rollout_policy_states<mixed_pd_actuator, wang2009_controller, wang2009_objective_type> states;
   semi_implicit_euler integ;
   std::int64_t steps = 0;
@@ -158,6 +160,10 @@ void BM_Rollout_Humanoid3D_Walk10s(benchmark::State& state) {
   bench_wang2009_walk<flat_terrain>(state);
 }
 BENCHMARK(BM_Rollout_Humanoid3D_Walk10s)->Unit(benchmark::kMillisecond)->MinTime(2.0);
+void BM_Rollout_Humanoid3D_Walk10s_AbaByJoint(benchmark::State& state) {
+  bench_wang2009_walk<flat_terrain>(state, true);
+}
+BENCHMARK(BM_Rollout_Humanoid3D_Walk10s_AbaByJoint)->Unit(benchmark::kMillisecond)->MinTime(2.0);
 void BM_Rollout_Humanoid3D_Walk10s_NoBroadPhase(benchmark::State& state) {
   bench_wang2009_walk<flat_without_height_bound>(state);
 }

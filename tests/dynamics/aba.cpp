@@ -242,7 +242,7 @@ TEMPLATE_TEST_CASE("aba by joints and by single-DOF nodes solve the same equatio
   // Two recursions of the same algorithm (aba_by_joint.hpp: a body's 1-3 DOFs as one joint;
   // aba.hpp's passes: one node per DOF with massless bodies between), each also checked against
   // CRBA's M: they agree to rounding, with external wrenches and with an armature. (The node
-  // passes remain the path of a model built by hand with a body of more than three DOFs.)
+  // passes are the default, enable_aba_by_joint opts in.)
   std::mt19937 rng(77);
   std::mt19937_64 configuration_rng(77);
   for (int trial = 0; trial < 10; ++trial) {
@@ -255,8 +255,8 @@ TEMPLATE_TEST_CASE("aba by joints and by single-DOF nodes solve the same equatio
     auto by_node = make_workspace(m);
     disable_planar_path(by_joint);
     disable_planar_path(by_node);
-    REQUIRE(by_joint.scratch.joints.enabled);
-    by_node.scratch.joints.enabled = false;
+    REQUIRE(enable_aba_by_joint(by_joint));
+    REQUIRE_FALSE(by_node.scratch.joints.enabled);  // the default
     const Eigen::VectorXd q = random_configuration(m, configuration_rng);
     const Eigen::VectorXd v = gaitsynth::testing::random_vector(rng, m.nv(), 2.0);
     const Eigen::VectorXd tau = gaitsynth::testing::random_vector(rng, m.nv(), 10.0);

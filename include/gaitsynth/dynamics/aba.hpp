@@ -71,17 +71,22 @@ void aba_root(const model<Root>& m, workspace<Root>& ws,
   constexpr int nvr = Root::nv;
   const svec a_base = base_acceleration(m);
   if constexpr (std::is_same_v<Root, floating_root>) {
-    // A free root's S0 = [0 R; 1 0] is orthogonal (S0^-T = S0), so the equation below,
+    // By joints (and only there: the node passes keep their rounding, workspace.hpp says why): a
+    // free root's S0 = [0 R; 1 0] is orthogonal (S0^-T = S0), so the equation below,
     // (S0^T IA0 S0) ddq_r = tau_r - S0^T f0, is IA0 z = S0 tau_r - f0 with ddq_r = S0^T z, and
     // the root's acceleration is a_pre + S0 ddq_r = a_pre + z: one 6 x 6 solve in world axes,
     // without forming S0^T IA0 S0.
-    const svec a_pre = a_base + s.C[0];
-    const vec6 f0 = to_vec6(s.pA[0] + op_times(s.IA[0], a_pre));
-    const vec6 z = solve_spd<6>(to_mat6(s.IA[0]), s.S0 * tau.template head<6>() - f0);
-    ws.ddq.template head<6>() = s.S0.transpose() * z;
-    s.A[0] = a_pre;
-    s.A[0].template head<6>() += z;
-  } else if constexpr (nvr > 0) {
+    if (s.joints.enabled) {
+      const svec a_pre = a_base + s.C[0];
+      const vec6 f0 = to_vec6(s.pA[0] + op_times(s.IA[0], a_pre));
+      const vec6 z = solve_spd<6>(to_mat6(s.IA[0]), s.S0 * tau.template head<6>() - f0);
+      ws.ddq.template head<6>() = s.S0.transpose() * z;
+      s.A[0] = a_pre;
+      s.A[0].template head<6>() += z;
+      return;
+    }
+  }
+  if constexpr (nvr > 0) {
     // Root: a0 = a_base + c0 + S0 ddq_r and S0^T (IA0 a0 + pA0) = tau_r, so
     // (S0^T IA0 S0) ddq_r = tau_r - S0^T (pA0 + IA0 (a_base + c0)).
     using S0_t = typename detail::dynamics_scratch<Root>::root_subspace;

@@ -229,9 +229,10 @@ struct dynamics_scratch {
 
   /// ABA by joints (aba.hpp, aba_passes_by_joint): each body's 1-3 DOFs as one joint with a 6 x k
   /// motion subspace (Featherstone 2008, Table 7.1) instead of a chain of single-DOF nodes with
-  /// massless bodies between them. Enabled by make_workspace when every non-root body has 1 to 3
-  /// DOFs; per body, the values pass 3 needs.
+  /// massless bodies between them. Opt-in (enable_aba_by_joint); sized by make_workspace when
+  /// every non-root body has 1 to 3 DOFs (available); per body, the values pass 3 needs.
   struct joint_blocks {
+    bool available = false;
     bool enabled = false;
     std::vector<std::array<svec, 3>> U;       ///< per body: IA S, one column per DOF
     std::vector<std::array<double, 9>> Dinv;  ///< per body: (S^T IA S)^-1, k x k, row-major
@@ -344,9 +345,12 @@ workspace<Root> make_workspace(const model<Root>& m) {
   bool by_joint = nb > 1;
   for (int b = 1; b < nb; ++b)
     by_joint = by_joint && m.bodies[b].num_dofs >= 1 && m.bodies[b].num_dofs <= 3;
-  s.joints.enabled = by_joint;
+  s.joints.available = by_joint;
+  s.joints.enabled = false;
   if (by_joint) {
-    s.joints.U.assign(nb, {});
+    std::array<detail::svec, 3> zero_columns;  // Eigen leaves a default-constructed svec unset
+    zero_columns.fill(detail::svec::Zero());
+    s.joints.U.assign(nb, zero_columns);
     s.joints.Dinv.assign(nb, {});
     s.joints.u.assign(nb, {});
     s.joints.c.assign(nb, detail::svec::Zero());
@@ -401,6 +405,19 @@ void add_point_force(const model<Root>& m, workspace<Root>& ws, int body, const 
 template <root_joint Root>
 void add_body_wrench(workspace<Root>& ws, int body, const vec6& wrench) {
   ws.f_ext[body] += wrench;
+}
+
+/// Runs aba on this workspace by joints (dynamics/aba_by_joint.hpp: each body's 1-3 DOFs as one
+/// joint), or again by single-DOF nodes (on = false, the default of make_workspace). Both solve
+/// the same equations; by joints is about 9 % faster on the 3D humanoids but rounds differently,
+/// and every saved walker under data/ was made and is checked with the node passes (their Table 1
+/// forces move by 5-10 N with the rounding: docs/performance.md, "ABA by joints"), so it is not
+/// the default. \returns whether it is now on (false for a model with a body of more than three
+/// DOFs, which always runs by nodes).
+template <root_joint Root>
+bool enable_aba_by_joint(workspace<Root>& ws, bool on = true) {
+  ws.scratch.joints.enabled = on && ws.scratch.joints.available;
+  return ws.scratch.joints.enabled;
 }
 
 /// Turns the planar fast path off for this workspace, so every algorithm runs the general 6D code

@@ -7,8 +7,6 @@
 /// force of a torque on the child body, by virtual work).
 #include <Eigen/Geometry>
 #include <array>
-#include <cstddef>
-#include <type_traits>
 
 #include "gaitsynth/controllers/sensors.hpp"
 #include "gaitsynth/model/model.hpp"
@@ -20,16 +18,11 @@ namespace gaitsynth {
 /// World axis of joint DOF j in the current pose: a body with DOFs f..l composed intrinsically
 /// (model/model.hpp) has R_world_body = R_world_parent R(a_f, q_f) ... R(a_l, q_l), so the axis
 /// of DOF k is R_world_body R(a_l, -q_l) ... R(a_k+1, -q_k+1) a_k.
-/// Under the rollout (sensors with a workspace, 6D kinematics of this step) the axis is read
-/// from the kinematics, which composed it on the way down the chain: the angular part of DOF j's
-/// motion subspace S_j (dynamics/kinematics.hpp), the same axis the dynamics apply tau_j about.
-/// Otherwise (sensors filled by hand) it is composed here.
+/// (Reading S_j's angular part from the rollout's kinematics would save the angle-axis products
+/// here, but rounds differently, and the saved walkers' Table 1 forces move with the rounding:
+/// docs/performance.md, "ABA by joints".)
 template <root_joint Root>
 vec3 dof_world_axis(const sensors<Root>& s, int j) {
-  if constexpr (!std::is_same_v<Root, planar_root>) {
-    if (s.workspace_ptr != nullptr && s.workspace_ptr->scratch.level >= 1)
-      return detail::ang(s.workspace_ptr->scratch.S[static_cast<std::size_t>(j) + 1]);
-  }
   const model<Root>& m = s.model();
   const joint_dof& d = m.dofs[j];
   const body& b = m.bodies[d.body];
