@@ -62,9 +62,7 @@ inline auto lin(const svec& x) {
 inline svec make_svec(const vec3& a, const vec3& l) {
   svec x;
 #if defined(__AVX512F__)
-  const __m256d lo = _mm256_setr_pd(a[0], a[1], a[2], l[0]);
-  const __m256d hi = _mm256_setr_pd(l[1], l[2], 0.0, 0.0);
-  _mm512_storeu_pd(x.data(), _mm512_insertf64x4(_mm512_castpd256_pd512(lo), hi, 1));
+  _mm512_storeu_pd(x.data(), _mm512_set_pd(0.0, 0.0, l[2], l[1], l[0], a[2], a[1], a[0]));
 #elif defined(__AVX__)
   _mm256_storeu_pd(x.data(), _mm256_setr_pd(a[0], a[1], a[2], l[0]));
   _mm256_storeu_pd(x.data() + 4, _mm256_setr_pd(l[1], l[2], 0.0, 0.0));
