@@ -3,7 +3,8 @@
 # operations of another revision (default: HEAD): builds scripts/rounding_probe.cpp against both
 # include trees with the tests' flags (Release, baseline x86-64, no FMA contraction) and compares
 # the hexfloat outputs. Use it for any change to the planar dynamics, contact or rollout loop that
-# is meant to be a pure speed-up; docs/performance.md ("Rounding") says why it matters.
+# is meant to be a pure speed-up (the probe runs the 3D walkers too); docs/performance.md
+# ("Rounding") says why it matters.
 #   scripts/rounding_check.sh [REV]
 set -euo pipefail
 cd "$(dirname "$0")/.."

@@ -1,12 +1,18 @@
 // Rounding probe (scripts/rounding_check.sh): prints, in hexfloat, the cost, step count and final
 // COM of rollouts of every saved Sharon 2005 controller (flat ground, the 10 degree slope, the
-// Figure 8 bodies, two bump profiles) and of pushed PD rollouts of the 7-link human. Built once
-// against the headers of another revision and once against the working tree, identical outputs
-// show that a change kept every floating-point operation of the planar simulation (the saved
-// controllers depend on it; docs/performance.md, "Rounding").
+// Figure 8 bodies, two bump profiles) and of pushed PD rollouts of the 7-link human, and of the
+// saved 3D walkers of Wang et al. 2009 (10 s each, with the settings of their optimization).
+// Built once against the headers of another revision and once against the working tree,
+// identical outputs show that a change kept every floating-point operation of the simulation
+// (the saved controllers depend on it; docs/performance.md, "Rounding").
 //
 //   rounding_probe REPO_ROOT
 #include <cstdio>
+#include "gaitsynth/actuators/mixed_pd.hpp"
+#include "gaitsynth/controllers/fsm/wang2009_json.hpp"
+#include "gaitsynth/models/wang2009.hpp"
+#include "gaitsynth/objectives/wang2009/wang2009_objective.hpp"
+#include "gaitsynth/synthesis/wang2009_simulation.hpp"
 #include "gaitsynth/actuators/pd.hpp"
 #include "gaitsynth/actuators/torque.hpp"
 #include "gaitsynth/contact/flat_terrain.hpp"
@@ -23,7 +29,11 @@
 #else  // revisions before the synthesis/ folder
 #include "gaitsynth/controllers/nearest_neighbor_synthesis.hpp"
 #endif
+#if __has_include("gaitsynth/synthesis/sharon2005_scenarios.hpp")
+#include "gaitsynth/synthesis/sharon2005_scenarios.hpp"
+#else  // revisions before 821fa71 kept it beside the examples
 #include "sharon2005_scenarios.hpp"
+#endif
 using namespace gaitsynth;
 static std::string data_dir;
 static std::string D(const std::string& f) {
@@ -94,5 +104,18 @@ int main(int argc, char** argv) {
     auto r = rollout(h7, pd_actuator::uniform(h7, 300, 30), pose_hold(h7), distance_objective(),
                      flat_terrain{}, semi_implicit_euler{}, none, ro, scr);
     print(k ? "pd push fall" : "pd push", r, &scr.state);
+  }
+  // The 3D walkers of Wang et al. 2009 (world-frame servos, 63 contact points, implicit dampers):
+  // 10 s of each saved walker below on flat ground.
+  for (const char* file : {"stocky_table2", "stocky_ratio_constraint100", "short_cot"}) {
+    const std::string path = data_dir + "/data/wang2009/walkers/" + file + ".controller.json";
+    const floating_model m = wang2009_humanoid(wang2009_preset(wang2009_saved_shape(path)));
+    wang2009_controller c(m);
+    const std::vector<double> p = load_wang2009_controller(path, c).parameters;
+    const rollout_options opt = wang2009_rollout_options(m);
+    auto scr = make_rollout_scratch(m);
+    const auto r = rollout(m, mixed_pd_actuator{}, c, wang2009_objective(m), flat_terrain{},
+                           semi_implicit_euler{}, std::span<const double>(p), opt, scr);
+    print(file, r, &scr.state);
   }
 }
