@@ -9,21 +9,21 @@
 //   rounding_probe REPO_ROOT
 #include <cstdio>
 #include "gaitsynth/actuators/mixed_pd.hpp"
-#include "gaitsynth/controllers/fsm/wang2009_json.hpp"
-#include "gaitsynth/models/wang2009.hpp"
-#include "gaitsynth/objectives/wang2009/wang2009_objective.hpp"
-#include "gaitsynth/synthesis/wang2009_simulation.hpp"
 #include "gaitsynth/actuators/pd.hpp"
 #include "gaitsynth/actuators/torque.hpp"
 #include "gaitsynth/contact/flat_terrain.hpp"
 #include "gaitsynth/contact/slope_terrain.hpp"
+#include "gaitsynth/controllers/fsm/wang2009_json.hpp"
 #include "gaitsynth/controllers/nearest_neighbor_json.hpp"
 #include "gaitsynth/controllers/pose_hold.hpp"
 #include "gaitsynth/integrators/semi_implicit_euler.hpp"
 #include "gaitsynth/io/keyframes_json.hpp"
 #include "gaitsynth/models/sharon2005.hpp"
+#include "gaitsynth/models/wang2009.hpp"
 #include "gaitsynth/objectives/distance.hpp"
 #include "gaitsynth/objectives/mass_distance.hpp"
+#include "gaitsynth/objectives/wang2009/wang2009_objective.hpp"
+#include "gaitsynth/synthesis/wang2009_simulation.hpp"
 #if __has_include("gaitsynth/synthesis/nearest_neighbor_synthesis.hpp")
 #include "gaitsynth/synthesis/nearest_neighbor_synthesis.hpp"
 #else  // revisions before the synthesis/ folder
