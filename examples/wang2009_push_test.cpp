@@ -6,6 +6,7 @@
 //   wang2009_push_test [--resolution N] [--max-force N] [--from-yin] [--paper COLUMN]
 //   wang2009_push_test --controller FILE [--paper COLUMN] [--resolution N] [--max-force N]
 //                      [--slope DEG] [--mu MU]
+//   either with [--perturbed N [--required K]] [--threads T]
 //
 // --resolution: step of the force components tried, N (default 5, in [0.01, 10000]);
 // --max-force: the largest tried, N (default 500, in [0, 10000]). --from-yin tests Yin et al.'s
@@ -15,21 +16,32 @@
 // overweight, tall, short2, stocky, simbicon; default: SIMBICON's), on the slope and friction it
 // was optimized for (its file's info; --slope and --mu override them: a walker made for mu = 0.3
 // or 12 degrees is pushed where it walks, not on level ground at mu = 10). SIMBICON walks on
-// level ground at mu = 10 unless told otherwise. Nothing is random: there is no --seed. --help
-// lists every flag with its default.
+// level ground at mu = 10 unless told otherwise. --perturbed N adds a column that holds beyond
+// one rounding: the largest force that K of N perturbed starts (the claim tests' starts: joint
+// velocities + N(0, 0.05 rad/s), seed 2009; K default ceil(0.8 N)) survive at every force up to
+// it (rollout/push_test.hpp, max_push_force_from_starts), with each start's own largest force.
+// The eight directions run on --threads threads (default all); the table does not depend on it.
+// Nothing is random: there is no --seed. --help lists every flag with its default.
 #include <array>
+#include <atomic>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <exception>
 #include <iostream>
 #include <numbers>
+#include <numeric>
 #include <stdexcept>
 #include <string>
+#include <thread>
+#include <vector>
 
 #include "command_line.hpp"
 #include "gaitsynth/controllers/fsm/simbicon.hpp"
 #include "gaitsynth/controllers/fsm/wang2009_json.hpp"
 #include "gaitsynth/gaitsynth.hpp"
 #include "gaitsynth/rollout/push_test.hpp"
+#include "gaitsynth/rollout/start_perturbations.hpp"
 #include "gaitsynth/synthesis/wang2009_simulation.hpp"
 
 using namespace gaitsynth;
@@ -48,29 +60,94 @@ std::array<double, 8> paper_column(const std::string& name) {
   return {225, 150, 250, 100, 120, 100, 275, 125};
 }
 
-/// Prints the largest force per direction for the walker `test(direction)` next to the column.
-template <class Test>
-void print_table(const std::string& column, double slope_deg, double mu, Test&& test) {
+/// One direction's row: the own start's largest force and, with perturbed starts, their scan.
+struct table_row {
+  double own = 0.0;
+  push_scan perturbed;
+};
+
+/// Runs `row(direction)` for Table 1's eight directions on `threads` threads (each direction is
+/// deterministic, so the table does not depend on the thread count) and prints the rows next to
+/// the paper's column; `required` of `perturbed` starts (0: only the own start).
+template <class Row>
+void print_table(const std::string& column, double slope_deg, double mu, int perturbed,
+                 int required, unsigned threads, Row&& row) {
   const std::array<double, 8> paper = paper_column(column);
+  std::array<table_row, 8> rows;
+  std::array<std::exception_ptr, 8> errors;
+  std::atomic<int> next{0};
+  const auto work = [&] {
+    for (int k = next++; k < 8; k = next++) {
+      const auto ks = static_cast<std::size_t>(k);
+      try {
+        rows[ks] = row(table1_directions()[ks]);
+        const vec3& d = table1_directions()[ks];
+        std::fprintf(stderr, "(%2.0f,%2.0f) done\n", d.x(), d.y());
+      } catch (...) {
+        errors[ks] = std::current_exception();
+      }
+    }
+  };
+  std::vector<std::thread> pool;
+  for (unsigned t = 1; t < std::min(threads, 8u); ++t) pool.emplace_back(work);
+  work();
+  for (std::thread& t : pool) t.join();
+  for (const std::exception_ptr& e : errors)
+    if (e) std::rethrow_exception(e);
   std::printf("ground: slope %g deg, mu %g\n", slope_deg, mu);
-  std::printf("direction  max force (N)  paper %s (N)\n", column.c_str());
-  for (int k = 0; k < 8; ++k) {
-    const vec3& d = table1_directions()[static_cast<std::size_t>(k)];
-    std::printf("(%2.0f,%2.0f)    %8.0f       %8.0f\n", d.x(), d.y(), test(d),
-                paper[static_cast<std::size_t>(k)]);
-    std::fflush(stdout);
+  if (perturbed == 0) {
+    std::printf("direction  max force (N)  paper %s (N)\n", column.c_str());
+  } else {
+    std::printf(
+        "direction  own start (N)  %d of %d perturbed (N)  paper %s (N)  perturbed "
+        "starts' own (N; + still passing)\n",
+        required, perturbed, column.c_str());
+  }
+  for (std::size_t k = 0; k < 8; ++k) {
+    const vec3& d = table1_directions()[k];
+    if (perturbed == 0) {
+      std::printf("(%2.0f,%2.0f)    %8.0f       %8.0f\n", d.x(), d.y(), rows[k].own, paper[k]);
+      continue;
+    }
+    std::printf("(%2.0f,%2.0f)    %8.0f       %14.0f         %8.0f        ", d.x(), d.y(),
+                rows[k].own, rows[k].perturbed.force, paper[k]);
+    std::vector<std::size_t> order(rows[k].perturbed.per_start.size());
+    std::iota(order.begin(), order.end(), std::size_t{0});
+    const push_scan& s = rows[k].perturbed;
+    std::stable_sort(order.begin(), order.end(),
+                     [&](std::size_t a, std::size_t b) { return s.per_start[a] > s.per_start[b]; });
+    for (std::size_t i : order) std::printf(" %g%s", s.per_start[i], s.censored[i] ? "+" : "");
+    std::printf("\n");
   }
 }
 
 /// Table 1 on the ground the walker walks on: level (flat_terrain, which lets the contact skip
-/// the points above it) or the uphill slope along +x.
+/// the points above it) or the uphill slope along +x. `test(direction, ground)` gives the row.
 template <class Test>
-void print_table_on(const std::string& column, double slope_deg, double mu, Test&& test) {
+void print_table_on(const std::string& column, double slope_deg, double mu, int perturbed,
+                    int required, unsigned threads, Test&& test) {
   if (slope_deg == 0.0)
-    return print_table(column, slope_deg, mu,
+    return print_table(column, slope_deg, mu, perturbed, required, threads,
                        [&](const vec3& d) { return test(d, flat_terrain{}); });
   const slope_terrain ground(slope_deg * std::numbers::pi / 180.0);
-  print_table(column, slope_deg, mu, [&](const vec3& d) { return test(d, ground); });
+  print_table(column, slope_deg, mu, perturbed, required, threads,
+              [&](const vec3& d) { return test(d, ground); });
+}
+
+/// The row for `direction`: the own start's scan, then the perturbed starts' (if any).
+template <class Controller, class Ground>
+table_row scan_row(const floating_model& m, const Controller& c, const Ground& ground,
+                   const std::vector<double>& p, const rollout_options& opt, int torso,
+                   const vec3& direction, const std::vector<Eigen::VectorXd>& starts, int required,
+                   const push_protocol& proto) {
+  table_row r;
+  r.own = max_push_force(m, mixed_pd_actuator{}, c, ground, semi_implicit_euler{},
+                         std::span<const double>(p), opt, torso, direction, proto);
+  if (!starts.empty())
+    r.perturbed = max_push_force_from_starts(m, mixed_pd_actuator{}, c, ground,
+                                             semi_implicit_euler{}, std::span<const double>(p), opt,
+                                             torso, direction, starts, required, proto);
+  return r;
 }
 
 }  // namespace
@@ -80,6 +157,8 @@ int main(int argc, char** argv) try {
   bool from_yin = false;
   std::string controller, column = "simbicon";
   double slope_deg = 0.0, mu = 10.0;  // SIMBICON's ground; a saved walker's comes from its file
+  int perturbed = 0, required = 0;
+  unsigned threads = 0;
   CLI::App app{
       "Table 1 of Wang, Fleet & Hertzmann 2009: the largest push a walker survives from each of 8 "
       "directions (the SIMBICON baseline, or a saved controller).",
@@ -100,7 +179,25 @@ int main(int argc, char** argv) try {
       ->check(example_cli::in_range(-44.9, 44.9));
   app.add_option("--mu", mu, "ground friction (default: the controller's own, else Sec. 4.2's 10)")
       ->check(example_cli::in_range(1e-6, 1e6));
+  app.add_option("--perturbed", perturbed,
+                 "also scan from this many perturbed starts (joint velocities + N(0, 0.05 rad/s), "
+                 "seed 2009, the claim tests' starts)")
+      ->check(example_cli::integer_in(0, 1000));
+  app.add_option("--required", required,
+                 "with --perturbed: how many of them must pass (default: 8 of 10, i.e. "
+                 "ceil(0.8 x perturbed))")
+      ->check(example_cli::integer_in(1, 1000))
+      ->default_str("ceil(0.8 x perturbed)");
+  example_cli::add_threads(app, threads);
   example_cli::parse(app, argc, argv);
+  if (app.get_option("--required")->count() == 0)
+    required = static_cast<int>(std::ceil(0.8 * perturbed - 1e-9));
+  if (perturbed > 0 && required > perturbed)
+    throw std::invalid_argument("--required " + std::to_string(required) +
+                                " is more than --perturbed " + std::to_string(perturbed));
+  if (perturbed == 0 && app.get_option("--required")->count() > 0)
+    throw std::invalid_argument("--required needs --perturbed");
+  threads = example_cli::resolve_threads(threads);
   const bool slope_given = app.get_option("--slope")->count() > 0;
   const bool mu_given = app.get_option("--mu")->count() > 0;
   if (from_yin && !controller.empty())
@@ -118,10 +215,12 @@ int main(int argc, char** argv) try {
     rollout_options opt = wang2009_rollout_options(m, wang2009_fail_height(shape));
     opt.contact.mu = mu;
     const int torso = m.body_index("torso");
-    print_table_on(column, slope_deg, mu, [&](const vec3& d, const auto& ground) {
-      return max_push_force(m, mixed_pd_actuator{}, c, ground, semi_implicit_euler{},
-                            std::span<const double>(p), opt, torso, d, proto);
-    });
+    const std::vector<Eigen::VectorXd> starts =
+        joint_velocity_perturbations(m, perturbed, 0.05, 2009);
+    print_table_on(column, slope_deg, mu, perturbed, required, threads,
+                   [&](const vec3& d, const auto& ground) {
+                     return scan_row(m, c, ground, p, opt, torso, d, starts, required, proto);
+                   });
     return 0;
   }
   const floating_model m = wang2009_humanoid();
@@ -134,10 +233,12 @@ int main(int argc, char** argv) try {
   opt.fall_height = 0.7;  // E_fail's height
   opt.initial_state = simbicon_start_state(m);
   const int torso = m.body_index("torso");
-  print_table_on(column, slope_deg, mu, [&](const vec3& d, const auto& ground) {
-    return max_push_force(m, mixed_pd_actuator{}, c, ground, semi_implicit_euler{},
-                          std::span<const double>(p), opt, torso, d, proto);
-  });
+  const std::vector<Eigen::VectorXd> starts =
+      joint_velocity_perturbations(m, perturbed, 0.05, 2009);
+  print_table_on(column, slope_deg, mu, perturbed, required, threads,
+                 [&](const vec3& d, const auto& ground) {
+                   return scan_row(m, c, ground, p, opt, torso, d, starts, required, proto);
+                 });
   return 0;
 } catch (const std::exception& e) {
   std::cerr << "wang2009_push_test: " << e.what() << "\n";

@@ -9,6 +9,8 @@
 /// Here the pushes start at t0 + period (4, 8, ..., 36 s: nine pushes, 4 s to recover from the
 /// last), and "still walking forward" means the rollout did not fall (COM above the fall height)
 /// and its COM advanced along +x at `min_forward_speed` or faster over the last period.
+#include <Eigen/Core>
+
 #include <array>
 #include <cmath>
 #include <functional>
@@ -118,6 +120,70 @@ double max_push_force(const model<Root>& m, const Actuator& act, const Controlle
     survived = f;
   }
   return survived;
+}
+
+/// Table 1's entry for one direction from several starts.
+struct push_scan {
+  double force = 0.0;  ///< N: the largest grid force that `required` of the starts survive
+  /// N, per start: its own largest force (max_push_force's rule), or, where censored[k], the
+  /// last force it passed before the scan could stop (a lower bound).
+  std::vector<double> per_start;
+  std::vector<bool> censored;  ///< start k was still passing when the scan stopped
+};
+
+/// Table 1's entry for one direction beyond one rounding: the largest force component F on
+/// max_push_force's grid such that at least `required` of the starts pass every force up to F.
+/// Start k is opt with `velocity_offsets[k]` as its initial_velocity_offset (an empty vector:
+/// opt's own start), e.g. joint_velocity_perturbations(m, 10, 0.05, seed) with required = 8.
+/// F is the required-th largest of the starts' own max_push_force values; the scan runs the
+/// starts that are still passing, level by level, and stops as soon as fewer than `required`
+/// can be. Deterministic: every trial is one rollout from its own start.
+template <root_joint Root, class Actuator, class Controller, terrain Terrain, class Integrator>
+push_scan max_push_force_from_starts(const model<Root>& m, const Actuator& act,
+                                     const Controller& ctrl, const Terrain& ground,
+                                     const Integrator& integ, std::span<const double> params,
+                                     rollout_options opt, int body, const vec3& direction,
+                                     std::span<const Eigen::VectorXd> velocity_offsets,
+                                     int required, const push_protocol& proto = {}) {
+  const int n = static_cast<int>(velocity_offsets.size());
+  check_argument(n > 0, "max_push_force_from_starts: no starts (velocity_offsets is empty)");
+  check_argument(required >= 1 && required <= n,
+                 "max_push_force_from_starts: required must be in [1, ", n,
+                 "] (the number of starts), got ", required);
+  check_positive(proto.resolution, "push_protocol::resolution (N)");
+  check_argument(std::isfinite(proto.max_force) && proto.max_force >= 0.0,
+                 "push_protocol::max_force must be finite and >= 0 N, got ", proto.max_force);
+  check_argument(proto.max_force / proto.resolution < 1e6,
+                 "push_protocol: max_force / resolution must be < 1e6 trials, got ",
+                 proto.max_force, " N / ", proto.resolution, " N");
+  check_argument(direction.allFinite(), "max_push_force_from_starts: direction (",
+                 direction.transpose(), ") is not finite");
+  for (int k = 0; k < n; ++k) {
+    const Eigen::Index size = velocity_offsets[static_cast<std::size_t>(k)].size();
+    check_argument(size == 0 || size == m.nv(), "max_push_force_from_starts: velocity_offsets[", k,
+                   "] has ", size, " entries, model '", m.name, "' has nv = ", m.nv());
+  }
+  push_scan out;
+  out.per_start.assign(static_cast<std::size_t>(n), 0.0);
+  out.censored.assign(static_cast<std::size_t>(n), true);
+  int alive = n;
+  for (double f = proto.resolution; f <= proto.max_force + 1e-9; f += proto.resolution) {
+    for (int k = 0; k < n && alive >= required; ++k) {
+      const auto ks = static_cast<std::size_t>(k);
+      if (!out.censored[ks]) continue;  // failed at a lower force
+      opt.initial_velocity_offset = velocity_offsets[ks];
+      if (push_trial_run(m, act, ctrl, ground, integ, params, opt, body, vec3(f * direction), proto)
+              .passed) {
+        out.per_start[ks] = f;
+      } else {
+        out.censored[ks] = false;
+        --alive;
+      }
+    }
+    if (alive < required) break;
+    out.force = f;
+  }
+  return out;
 }
 
 /// Table 1's eight directions, in its order: (1,0), (1,1), (0,1), (-1,1), (-1,0), (-1,-1),
