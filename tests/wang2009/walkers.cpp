@@ -20,6 +20,7 @@
 #include <numbers>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "gaitsynth/analysis/ankle_push_off.hpp"
 #include "gaitsynth/analysis/arm_swing.hpp"
@@ -220,6 +221,44 @@ void check_survives_table1(const std::string& file, const std::array<double, 8>&
               << " N: " << to_string(t.result.reason) << " after " << t.result.time
               << " s, final speed " << t.final_speed << " m/s");
     CHECK(t.passed);
+  }
+}
+
+/// Table 1 beyond one rounding: along Table 1's direction k at `forces[k]` newtons, at least
+/// `required` of the 10 perturbed starts (seed 2009) pass the protocol. The page's figures are
+/// `wang2009_push_test --perturbed 10`'s: the largest force that 8 of 10 starts survive at every
+/// force up to it; this checks that force itself (the scan's last level). A direction stops as
+/// soon as its verdict is known. Release only, as above.
+void check_survives_table1_from_starts(const std::string& file, const std::array<double, 8>& forces,
+                                       int required = 8) {
+#ifdef GAITSYNTH_SANITIZED_BUILD
+  (void)file;
+  (void)forces;
+  (void)required;
+  return;
+#endif
+  const std::string path = std::string(GAITSYNTH_SOURCE_DIR) + "/data/wang2009/walkers/" + file;
+  const floating_model m = wang2009_humanoid(wang2009_preset(wang2009_saved_shape(path)));
+  wang2009_controller c(m);
+  const std::vector<double> p = load_wang2009_controller(path, c).parameters;
+  rollout_options opt =
+      wang2009_rollout_options(m, wang2009_fail_height(wang2009_saved_shape(path)));
+  const std::vector<Eigen::VectorXd> starts = joint_velocity_perturbations(m, 10, 0.05, 2009);
+  for (std::size_t k = 0; k < 8; ++k) {
+    int passed = 0, failed = 0;
+    for (std::size_t i = 0; i < starts.size() && passed < required && failed <= 10 - required;
+         ++i) {
+      opt.initial_velocity_offset = starts[i];
+      const bool ok = push_trial_run(m, mixed_pd_actuator{}, c, flat_terrain{},
+                                     semi_implicit_euler{}, std::span<const double>(p), opt,
+                                     m.body_index("torso"), forces[k] * table1_directions()[k])
+                          .passed;
+      (ok ? passed : failed) += 1;
+    }
+    INFO(file << ", direction " << table1_directions()[k].transpose() << " at " << forces[k]
+              << " N: " << passed << " perturbed starts passed before the verdict, " << failed
+              << " failed");
+    CHECK(passed >= required);
   }
 }
 
@@ -446,6 +485,14 @@ TEST_CASE("wang2009: the Table 1-trained walker survives the paper's stocky colu
   check_survives_table1("stocky_robust_table1.controller.json", {50, 65, 125, 75, 50, 50, 125, 50});
 }
 
+TEST_CASE("wang2009: the Table 1-trained walker's forces from perturbed starts",
+          "[wang2009][claim]") {
+  // The page's scan from 10 perturbed starts (8 of 10 at every force up to these): at or above
+  // the paper's stocky column in seven directions, not (-1,1) (65 against 75 N).
+  check_survives_table1_from_starts("stocky_robust_table1.controller.json",
+                                    {70, 65, 160, 65, 75, 65, 140, 65});
+}
+
 // The human-ratio walker of the 30 s stage trained with Table 1's structure (50 N, then 80 N; one
 // perturbed start) with the power ratio as a constraint instead of a penalty (`--ratio-within
 // 0.04`, rollout/problem_with_constraint.hpp): CMA's mean at 100 of the 80 N stage
@@ -471,6 +518,14 @@ TEST_CASE("wang2009: the ratio-constrained push walker survives its Table 1 forc
                         {85, 85, 105, 80, 105, 90, 105, 85});
 }
 
+TEST_CASE("wang2009: the ratio-constrained push walker's forces from perturbed starts",
+          "[wang2009][claim]") {
+  // The page's scan from 10 perturbed starts (8 of 10 at every force up to these): at or above
+  // the paper's stocky column in all but (0,1) and (0,-1), as from its own start.
+  check_survives_table1_from_starts("stocky_ratio_constraint.controller.json",
+                                    {80, 85, 100, 85, 100, 85, 105, 85});
+}
+
 // One more stage of the same at 100 N (data/wang2009/runs/stocky_ratio_constraint100/, CMA's mean
 // at 80): the issue's robust goal, the human ratio within 0.05 and the library's SIMBICON's Table
 // 1 force (75, 100, 150, 75, 150, 125, 200, 100) in six directions of eight (not (-1,0), (0,-1)).
@@ -486,12 +541,57 @@ TEST_CASE("wang2009: the 100 N ratio-constrained walker walks 100 s with the hum
                 33.5});
 }
 
-TEST_CASE("wang2009: the 100 N ratio-constrained walker survives SIMBICON's force in 6 of 8",
+TEST_CASE("wang2009: the 100 N ratio-constrained walker survives its Table 1 forces",
           "[wang2009][claim]") {
-  // The page's scan (5 N steps); at or above the library's SIMBICON in all but (-1,0) (140
-  // against 150) and (0,-1) (155 against 200).
+  // The page's scan (5 N steps) from its own start; at or above the library's SIMBICON on the
+  // same grid (75, 110, 160, 95, 160, 125, 165, 120) in five directions of eight.
   check_survives_table1("stocky_ratio_constraint100.controller.json",
                         {120, 125, 155, 115, 140, 125, 155, 125});
+}
+
+TEST_CASE(
+    "wang2009: the 100 N ratio-constrained walker, SIMBICON's force in 6 of 8 from "
+    "perturbed starts",
+    "[wang2009][claim]") {
+  // The issue's robust goal, beyond one start: the page's scan from 10 perturbed starts (8 of 10
+  // at every force up to these) is at or above the library's SIMBICON's, from the same starts
+  // (75, 105, 180, 95, 130, 90, 165, 105), in all but (0,1) and (0,-1).
+  check_survives_table1_from_starts("stocky_ratio_constraint100.controller.json",
+                                    {120, 125, 140, 95, 135, 105, 145, 125});
+}
+
+// One more stage at 120 N (data/wang2009/runs/stocky_ratio_constraint120/, CMA's mean at 80): the
+// issue's robust goal with room to spare, from perturbed starts.
+TEST_CASE("wang2009: the 120 N ratio-constrained walker walks 100 s with the human ratio",
+          "[wang2009][claim]") {
+  check_walker({"stocky_ratio_constraint120.controller.json",
+                1.412,
+                0.307,
+                {0.425, 0.026, 0.550},
+                10,
+                {false, false},
+                true,
+                29.4});
+}
+
+TEST_CASE("wang2009: the 120 N ratio-constrained walker survives its Table 1 forces",
+          "[wang2009][claim]") {
+  // The page's scan (5 N steps) from its own start: at or above the library's SIMBICON on the
+  // same grid (75, 110, 160, 95, 160, 125, 165, 120) in seven directions (equal in (-1,-1)), not
+  // (-1,0) (155 against 160).
+  check_survives_table1("stocky_ratio_constraint120.controller.json",
+                        {195, 155, 220, 125, 155, 125, 215, 170});
+}
+
+TEST_CASE(
+    "wang2009: the 120 N ratio-constrained walker, SIMBICON's force in 8 of 8 from "
+    "perturbed starts",
+    "[wang2009][claim]") {
+  // The issue's robust goal: the page's scan from 10 perturbed starts (8 of 10 at every force up
+  // to these) is 25-110 N above the library's SIMBICON's from the same starts (75, 105, 180, 95,
+  // 130, 90, 165, 105) in every direction.
+  check_survives_table1_from_starts("stocky_ratio_constraint120.controller.json",
+                                    {185, 150, 220, 125, 155, 125, 220, 150});
 }
 
 // Sec. 5, "Variation in body shape": cost-of-transport walkers (no speed or step target) for the
