@@ -73,6 +73,16 @@ template <class Row>
 void print_table(const std::string& column, double slope_deg, double mu, int perturbed,
                  int required, unsigned threads, Row&& row) {
   const std::array<double, 8> paper = paper_column(column);
+  std::printf("ground: slope %g deg, mu %g\n", slope_deg, mu);
+  if (perturbed == 0) {
+    std::printf("direction  max force (N)  paper %s (N)\n", column.c_str());
+  } else {
+    std::printf(
+        "direction  own start (N)  %d of %d perturbed (N)  paper %s (N)  perturbed "
+        "starts' own (N; + still passing)\n",
+        required, perturbed, column.c_str());
+  }
+  std::fflush(stdout);  // the ground line first, before the progress lines on stderr
   std::array<table_row, 8> rows;
   std::array<std::exception_ptr, 8> errors;
   std::atomic<int> next{0};
@@ -94,15 +104,6 @@ void print_table(const std::string& column, double slope_deg, double mu, int per
   for (std::thread& t : pool) t.join();
   for (const std::exception_ptr& e : errors)
     if (e) std::rethrow_exception(e);
-  std::printf("ground: slope %g deg, mu %g\n", slope_deg, mu);
-  if (perturbed == 0) {
-    std::printf("direction  max force (N)  paper %s (N)\n", column.c_str());
-  } else {
-    std::printf(
-        "direction  own start (N)  %d of %d perturbed (N)  paper %s (N)  perturbed "
-        "starts' own (N; + still passing)\n",
-        required, perturbed, column.c_str());
-  }
   for (std::size_t k = 0; k < 8; ++k) {
     const vec3& d = table1_directions()[k];
     if (perturbed == 0) {

@@ -108,6 +108,12 @@ case "$mode" in
         expect 2 "--mu: must be in .*, got nan" -- "$exe" --mu nan
         expect 2 "--slope: must be in .*, got 50" -- "$exe" --slope 50
       fi
+      if grep -q -- "--perturbed" <<<"$help"; then
+        expect 2 "--perturbed: must be in \[0, 1000\], got -1" -- "$exe" --perturbed -1
+        expect 2 "--required: must be in \[1, 1000\], got 0" -- "$exe" --required 0
+        expect 1 "--required 11 is more than --perturbed 10" -- "$exe" --perturbed 10 --required 11
+        expect 1 "--required needs --perturbed" -- "$exe" --required 3
+      fi
       if grep -q -- "--ratio-within" <<<"$help"; then
         expect 2 "--ratio-within: must be in .*, got 0" -- "$exe" --ratio-within 0
         expect 2 "--ratio-within: must be in .*, got nan" -- "$exe" --ratio-within nan
