@@ -14,16 +14,24 @@
 
 using namespace gaitsynth;
 
+namespace {
+/// SIMBICON's walk as Table 1 pushes it: Sec. 4.2's friction, E_fail's height, its own start.
+rollout_options simbicon_push_options(const floating_model& m) {
+  rollout_options o;
+  o.contact.mu = 10.0;
+  o.fall_height = 0.7;
+  o.initial_state = simbicon_start_state(m);
+  return o;
+}
+}  // namespace
+
 TEST_CASE("push protocol: SIMBICON survives 20 N and not 1500 N; the scan agrees",
           "[rollout][push]") {
   const auto m = wang2009_humanoid();
   const auto [kp, kd] = simbicon_walk_gains(m);
   const simbicon_controller c(m, kp, kd);
   const std::vector<double> p = simbicon_walk_parameters();
-  rollout_options o;
-  o.contact.mu = 10.0;
-  o.fall_height = 0.7;
-  o.initial_state = simbicon_start_state(m);
+  const rollout_options o = simbicon_push_options(m);
   const int torso = m.body_index("torso");
   push_protocol proto;
   proto.duration = 12.0;  // pushes at 4 and 8 s, 4 s to recover (the paper's is 40 s)
@@ -57,10 +65,7 @@ TEST_CASE("push protocol from several starts: the required-th largest of the sta
   const auto [kp, kd] = simbicon_walk_gains(m);
   const simbicon_controller c(m, kp, kd);
   const std::vector<double> p = simbicon_walk_parameters();
-  rollout_options o;
-  o.contact.mu = 10.0;
-  o.fall_height = 0.7;
-  o.initial_state = simbicon_start_state(m);
+  const rollout_options o = simbicon_push_options(m);
   const int torso = m.body_index("torso");
   push_protocol proto;
   proto.duration = 8.0;  // one push, at 4 s

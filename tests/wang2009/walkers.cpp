@@ -196,32 +196,45 @@ std::vector<rollout_result> walk_saved_from_starts(const std::string& file, doub
   return out;
 }
 
-/// Table 1's protocol (rollout/push_test.hpp: 40 s, a 0.4 s push to the torso every 4 s, force
-/// per component) on the saved walker `file` (under data/wang2009/walkers/), on flat ground, with
-/// `forces[k]` newtons along Table 1's direction k: it must pass in each. The Release suite checks
-/// it; a sanitized build only runs the walk of check_walker, the same code paths.
-void check_survives_table1(const std::string& file, const std::array<double, 8>& forces) {
-#ifdef GAITSYNTH_SANITIZED_BUILD
-  (void)file;
-  (void)forces;
-  return;
-#endif
+/// The saved walker `file` (under data/wang2009/walkers/) on flat ground with its optimization's
+/// settings: calls check(trial), where trial(force, velocity_offset) runs Table 1's protocol
+/// (rollout/push_test.hpp: 40 s, a 0.4 s push of `force` to the torso every 4 s) from the start
+/// offset by velocity_offset (empty: its own start).
+template <class Check>
+void with_saved_push_trial(const std::string& file, Check&& check) {
   const std::string path = std::string(GAITSYNTH_SOURCE_DIR) + "/data/wang2009/walkers/" + file;
   const floating_model m = wang2009_humanoid(wang2009_preset(wang2009_saved_shape(path)));
   wang2009_controller c(m);
   const std::vector<double> p = load_wang2009_controller(path, c).parameters;
   const rollout_options opt =
       wang2009_rollout_options(m, wang2009_fail_height(wang2009_saved_shape(path)));
-  for (std::size_t k = 0; k < 8; ++k) {
-    const vec3 force = forces[k] * table1_directions()[k];
-    const push_trial t =
-        push_trial_run(m, mixed_pd_actuator{}, c, flat_terrain{}, semi_implicit_euler{},
-                       std::span<const double>(p), opt, m.body_index("torso"), force);
-    INFO(file << ", direction " << table1_directions()[k].transpose() << " at " << forces[k]
-              << " N: " << to_string(t.result.reason) << " after " << t.result.time
-              << " s, final speed " << t.final_speed << " m/s");
-    CHECK(t.passed);
-  }
+  const int torso = m.body_index("torso");
+  check(m, [&](const vec3& force, const Eigen::VectorXd& velocity_offset) {
+    rollout_options o = opt;
+    o.initial_velocity_offset = velocity_offset;
+    return push_trial_run(m, mixed_pd_actuator{}, c, flat_terrain{}, semi_implicit_euler{},
+                          std::span<const double>(p), o, torso, force);
+  });
+}
+
+/// Table 1's protocol on the saved walker `file` from its own start, with `forces[k]` newtons
+/// along Table 1's direction k: it must pass in each. The Release suite checks it; a sanitized
+/// build only runs the walk of check_walker, the same code paths.
+void check_survives_table1(const std::string& file, const std::array<double, 8>& forces) {
+#ifdef GAITSYNTH_SANITIZED_BUILD
+  (void)file;
+  (void)forces;
+  return;
+#endif
+  with_saved_push_trial(file, [&](const floating_model&, const auto& trial) {
+    for (std::size_t k = 0; k < 8; ++k) {
+      const push_trial t = trial(forces[k] * table1_directions()[k], Eigen::VectorXd());
+      INFO(file << ", direction " << table1_directions()[k].transpose() << " at " << forces[k]
+                << " N: " << to_string(t.result.reason) << " after " << t.result.time
+                << " s, final speed " << t.final_speed << " m/s");
+      CHECK(t.passed);
+    }
+  });
 }
 
 /// Table 1 beyond one rounding: along Table 1's direction k at `forces[k]` newtons, at least
@@ -237,29 +250,19 @@ void check_survives_table1_from_starts(const std::string& file, const std::array
   (void)required;
   return;
 #endif
-  const std::string path = std::string(GAITSYNTH_SOURCE_DIR) + "/data/wang2009/walkers/" + file;
-  const floating_model m = wang2009_humanoid(wang2009_preset(wang2009_saved_shape(path)));
-  wang2009_controller c(m);
-  const std::vector<double> p = load_wang2009_controller(path, c).parameters;
-  rollout_options opt =
-      wang2009_rollout_options(m, wang2009_fail_height(wang2009_saved_shape(path)));
-  const std::vector<Eigen::VectorXd> starts = joint_velocity_perturbations(m, 10, 0.05, 2009);
-  for (std::size_t k = 0; k < 8; ++k) {
-    int passed = 0, failed = 0;
-    for (std::size_t i = 0; i < starts.size() && passed < required && failed <= 10 - required;
-         ++i) {
-      opt.initial_velocity_offset = starts[i];
-      const bool ok = push_trial_run(m, mixed_pd_actuator{}, c, flat_terrain{},
-                                     semi_implicit_euler{}, std::span<const double>(p), opt,
-                                     m.body_index("torso"), forces[k] * table1_directions()[k])
-                          .passed;
-      (ok ? passed : failed) += 1;
+  with_saved_push_trial(file, [&](const floating_model& m, const auto& trial) {
+    const std::vector<Eigen::VectorXd> starts = joint_velocity_perturbations(m, 10, 0.05, 2009);
+    for (std::size_t k = 0; k < 8; ++k) {
+      int passed = 0, failed = 0;
+      for (std::size_t i = 0; i < starts.size() && passed < required && failed <= 10 - required;
+           ++i)
+        (trial(forces[k] * table1_directions()[k], starts[i]).passed ? passed : failed) += 1;
+      INFO(file << ", direction " << table1_directions()[k].transpose() << " at " << forces[k]
+                << " N: " << passed << " perturbed starts passed before the verdict, " << failed
+                << " failed");
+      CHECK(passed >= required);
     }
-    INFO(file << ", direction " << table1_directions()[k].transpose() << " at " << forces[k]
-              << " N: " << passed << " perturbed starts passed before the verdict, " << failed
-              << " failed");
-    CHECK(passed >= required);
-  }
+  });
 }
 
 /// A level walker (optimized on flat ground, mu = 10; by default the stocky walker of Table 2) for

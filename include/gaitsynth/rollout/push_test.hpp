@@ -95,6 +95,20 @@ push_trial push_trial_run(const model<Root>& m, const Actuator& act, const Contr
   return out;
 }
 
+namespace detail {
+/// A scan's grid (resolution, max_force) and direction, checked for `who`.
+inline void check_push_scan(const push_protocol& proto, const vec3& direction, const char* who) {
+  check_positive(proto.resolution, "push_protocol::resolution (N)");
+  check_argument(std::isfinite(proto.max_force) && proto.max_force >= 0.0,
+                 "push_protocol::max_force must be finite and >= 0 N, got ", proto.max_force);
+  check_argument(proto.max_force / proto.resolution < 1e6,
+                 "push_protocol: max_force / resolution must be < 1e6 trials, got ",
+                 proto.max_force, " N / ", proto.resolution, " N");
+  check_argument(direction.allFinite(), who, ": direction (", direction.transpose(),
+                 ") is not finite");
+}
+}  // namespace detail
+
 /// Table 1's entry for one direction (components in {-1, 0, 1}, e.g. (1, 1)): the largest force
 /// component F, in steps of proto.resolution up to proto.max_force, such that every push
 /// F' direction with F' <= F on that grid passes (the scan stops at the first failure). 0 if the
@@ -104,14 +118,7 @@ double max_push_force(const model<Root>& m, const Actuator& act, const Controlle
                       const Terrain& ground, const Integrator& integ,
                       std::span<const double> params, const rollout_options& opt, int body,
                       const vec3& direction, const push_protocol& proto = {}) {
-  check_positive(proto.resolution, "push_protocol::resolution (N)");
-  check_argument(std::isfinite(proto.max_force) && proto.max_force >= 0.0,
-                 "push_protocol::max_force must be finite and >= 0 N, got ", proto.max_force);
-  check_argument(proto.max_force / proto.resolution < 1e6,
-                 "push_protocol: max_force / resolution must be < 1e6 trials, got ",
-                 proto.max_force, " N / ", proto.resolution, " N");
-  check_argument(direction.allFinite(), "max_push_force: direction (", direction.transpose(),
-                 ") is not finite");
+  detail::check_push_scan(proto, direction, "max_push_force");
   double survived = 0.0;
   for (double f = proto.resolution; f <= proto.max_force + 1e-9; f += proto.resolution) {
     if (!push_trial_run(m, act, ctrl, ground, integ, params, opt, body, vec3(f * direction), proto)
@@ -150,14 +157,7 @@ push_scan max_push_force_from_starts(const model<Root>& m, const Actuator& act,
   check_argument(required >= 1 && required <= n,
                  "max_push_force_from_starts: required must be in [1, ", n,
                  "] (the number of starts), got ", required);
-  check_positive(proto.resolution, "push_protocol::resolution (N)");
-  check_argument(std::isfinite(proto.max_force) && proto.max_force >= 0.0,
-                 "push_protocol::max_force must be finite and >= 0 N, got ", proto.max_force);
-  check_argument(proto.max_force / proto.resolution < 1e6,
-                 "push_protocol: max_force / resolution must be < 1e6 trials, got ",
-                 proto.max_force, " N / ", proto.resolution, " N");
-  check_argument(direction.allFinite(), "max_push_force_from_starts: direction (",
-                 direction.transpose(), ") is not finite");
+  detail::check_push_scan(proto, direction, "max_push_force_from_starts");
   for (int k = 0; k < n; ++k) {
     const Eigen::Index size = velocity_offsets[static_cast<std::size_t>(k)].size();
     check_argument(size == 0 || size == m.nv(), "max_push_force_from_starts: velocity_offsets[", k,
