@@ -9,6 +9,10 @@
 /// Here the pushes start at t0 + period (4, 8, ..., 36 s: nine pushes, 4 s to recover from the
 /// last), and "still walking forward" means the rollout did not fall (COM above the fall height)
 /// and its COM advanced along +x at `min_forward_speed` or faster over the last period.
+///
+/// One walk is chaotic, so one start's largest force moves with the rounding (up to 35 N here);
+/// max_push_force_from_starts gives the force that K of N perturbed starts survive, which moves
+/// far less (docs/reproductions/wang2009.md, "Table 1 from perturbed starts").
 #include <Eigen/Core>
 
 #include <array>
