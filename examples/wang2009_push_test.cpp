@@ -23,17 +23,14 @@
 // The eight directions run on --threads threads (default all); the table does not depend on it.
 // Nothing is random: there is no --seed. --help lists every flag with its default.
 #include <array>
-#include <atomic>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
-#include <exception>
 #include <iostream>
 #include <numbers>
 #include <numeric>
 #include <stdexcept>
 #include <string>
-#include <thread>
 #include <vector>
 
 #include "command_line.hpp"
@@ -43,6 +40,7 @@
 #include "gaitsynth/rollout/push_test.hpp"
 #include "gaitsynth/rollout/start_perturbations.hpp"
 #include "gaitsynth/synthesis/wang2009_simulation.hpp"
+#include "parallel_tasks.hpp"
 
 using namespace gaitsynth;
 
@@ -84,26 +82,12 @@ void print_table(const std::string& column, double slope_deg, double mu, int per
   }
   std::fflush(stdout);  // the ground line first, before the progress lines on stderr
   std::array<table_row, 8> rows;
-  std::array<std::exception_ptr, 8> errors;
-  std::atomic<int> next{0};
-  const auto work = [&] {
-    for (int k = next++; k < 8; k = next++) {
-      const auto ks = static_cast<std::size_t>(k);
-      try {
-        rows[ks] = row(table1_directions()[ks]);
-        const vec3& d = table1_directions()[ks];
-        std::fprintf(stderr, "(%2.0f,%2.0f) done\n", d.x(), d.y());
-      } catch (...) {
-        errors[ks] = std::current_exception();
-      }
-    }
-  };
-  std::vector<std::thread> pool;
-  for (unsigned t = 1; t < std::min(threads, 8u); ++t) pool.emplace_back(work);
-  work();
-  for (std::thread& t : pool) t.join();
-  for (const std::exception_ptr& e : errors)
-    if (e) std::rethrow_exception(e);
+  example_cli::run_tasks(8, threads, [&](int k) {
+    const auto ks = static_cast<std::size_t>(k);
+    rows[ks] = row(table1_directions()[ks]);
+    const vec3& d = table1_directions()[ks];
+    std::fprintf(stderr, "(%2.0f,%2.0f) done\n", d.x(), d.y());
+  });
   for (std::size_t k = 0; k < 8; ++k) {
     const vec3& d = table1_directions()[k];
     if (perturbed == 0) {

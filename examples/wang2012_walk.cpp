@@ -15,8 +15,8 @@
 //                 [--weaken MTU=F]... [--gait walk|run] [--muscle-svg FILE [--muscle MTU]]
 //                 [--leg-collisions off|on]
 //   wang2012_walk --resume DIR [--threads N]
-//   wang2012_walk --replay FILE [--check-seconds S] [--check-pushes N] [--leg-collisions off|on]
-//                 [--out DIR]
+//   wang2012_walk --replay FILE [--check-seconds S] [--check-pushes N [--check-push-starts K]]
+//                 [--leg-collisions off|on] [--out DIR]
 //
 // --robust-starts K (beyond the paper, as wang2009_walk's) adds K rollouts per candidate from
 // starts whose joint velocities are perturbed by a seeded N(0, start_sigma^2), the same for every
@@ -33,13 +33,15 @@
 // iterations) as wu2010_walk does on its random terrain.
 // --check-pushes N adds Table 1's 40 s push protocol to the check (rollout/push_test.hpp: a 0.4 s
 // push to the torso every 4 s, N newtons along each of the eight directions, one walk each; the
-// summary's pushes_survived). --effort picks J_M: the metabolic energy, or the ablations min_torque
-// (w_M = 5) and min_act (w_M = 60000) of Sec. 6.2. --weaken GAS=0.25 scales both GAS units' F_max
-// (the weakened muscles of Sec. 6.2). A saved controller records its effort, weights and weakness,
-// and a replay uses them unless told otherwise; --init keeps its weakness and colliding legs (the
-// body) unless told, not its effort or weights. --gait run starts from Sec. 6.3's running
-// controller instead of the walking one; --iterations 0 checks the initial controller without
-// optimizing it.
+// summary's pushes_survived); --check-push-starts K runs it from K perturbed starts per direction
+// too (the claim tests' starts, seed 2012) and counts, per direction, the starts that walk (the
+// summary's push_directions_from_starts: directions in which ceil(0.8 K) of them do). --effort
+// picks J_M: the metabolic energy, or the ablations min_torque (w_M = 5) and min_act (w_M = 60000)
+// of Sec. 6.2. --weaken GAS=0.25 scales both GAS units' F_max (the weakened muscles of Sec. 6.2). A
+// saved controller records its effort, weights and weakness, and a replay uses them unless told
+// otherwise; --init keeps its weakness and colliding legs (the body) unless told, not its effort or
+// weights. --gait run starts from Sec. 6.3's running controller instead of the walking one;
+// --iterations 0 checks the initial controller without optimizing it.
 //
 // --leg-collisions on (ours; default off, as the saved walkers were made): the left thigh and
 // shin collide with the right shin and the right thigh and shin with the left shin
@@ -83,6 +85,7 @@
 #include "gaitsynth/synthesis/robust_variants.hpp"
 #include "gaitsynth/synthesis/wang2009_simulation.hpp"
 #include "gaitsynth/synthesis/wang2012_search_space.hpp"
+#include "parallel_tasks.hpp"
 
 using namespace gaitsynth;
 namespace fs = std::filesystem;
@@ -105,8 +108,9 @@ struct cli {
   double push_force = 100.0;     // N (Sec. 6.4)
   int push_direction_step = -1;  // -1: robust_pushes (robust_variant_options::push_direction_step)
   double push_period = 3.0;      // s between the training pushes' starts
-  std::string push_phase = "fixed";    // fixed: first push at 2 s; random: redrawn per iteration
-  double check_pushes = 0.0;           // N: the check's 40 s push protocol (0: none)
+  std::string push_phase = "fixed";  // fixed: first push at 2 s; random: redrawn per iteration
+  double check_pushes = 0.0;         // N: the check's 40 s push protocol (0: none)
+  int check_push_starts = 0;         // and from this many perturbed starts per direction (0: none)
   std::string leg_collisions = "off";  // on: the legs collide (ours; the saved walkers: off)
   bool leg_collisions_given = false;
   double check_seconds = 20.0;
@@ -170,6 +174,11 @@ cli parse(int argc, char** argv) {
                  "also check Table 1's 40 s push protocol (a 0.4 s push to the torso every 4 s) "
                  "with this force, N, along each of its 8 directions (0: not checked)")
       ->check(example_cli::in_range(0.0, 100000.0));
+  app.add_option("--check-push-starts", c.check_push_starts,
+                 "with --check-pushes: also run the protocol from this many perturbed starts per "
+                 "direction (joint velocities + N(0, 0.05 rad/s), seed 2012, the claim tests' "
+                 "starts) and count the starts that walk (0: none)")
+      ->check(example_cli::integer_in(0, 1000));
   app.add_option("--effort", c.effort,
                  "J_M: metabolic (Sec. 5.1; default), torque (min_torque) or activation (min_act, "
                  "Sec. 6.2); a replay's default: the saved one")
@@ -210,6 +219,8 @@ cli parse(int argc, char** argv) {
     check_argument(eq != std::string::npos, "--weaken wants MTU=F, got '", v, "'");
     c.weaken[v.substr(0, eq)] = std::stod(v.substr(eq + 1));
   }
+  if (c.check_push_starts > 0 && c.check_pushes == 0.0)
+    throw std::invalid_argument("--check-push-starts needs --check-pushes");
   c.threads = example_cli::resolve_threads(c.threads);
   c.out_arg = out;
   c.options = example_cli::effective_options(app);
@@ -453,20 +464,54 @@ int run_with(const cli& c, const floating_model& m, const std::vector<musculoten
                               semi_implicit_euler{}, bx, po, scratch));
   }
   // --check-pushes F: Table 1's 40 s protocol (rollout/push_test.hpp) with F newtons along each
-  // of its eight directions, the diagonals too (Sec. 6.4's "100 N pushes"), one walk each.
+  // of its eight directions, the diagonals too (Sec. 6.4's "100 N pushes"), one walk each; with
+  // --check-push-starts N also from N perturbed starts per direction, so that the count holds
+  // beyond one rounding. Every (direction, start) walk is its own task on the threads.
   nlohmann::json pushes = nlohmann::json::array();
   int pushes_survived = 0;
+  int push_directions_from_starts = 0;  // with at least `required` of the perturbed starts walking
+  int push_starts_walked = 0;           // perturbed-start walks, all directions together
+  const int required = static_cast<int>(std::ceil(0.8 * c.check_push_starts - 1e-9));  // 8 of 10
   if (c.check_pushes > 0.0) {
     const int torso = m.body_index("torso");
-    for (const vec3& d : table1_directions()) {
-      const push_trial t =
+    const std::vector<Eigen::VectorXd> starts =
+        joint_velocity_perturbations(m, c.check_push_starts, 0.05, 2012);
+    const int per_direction = 1 + c.check_push_starts;  // the own start, then the perturbed ones
+    std::vector<push_trial> trials(static_cast<std::size_t>(8 * per_direction));
+    example_cli::run_tasks(8 * per_direction, c.threads, [&](int k) {
+      const int d = k / per_direction, start = k % per_direction;
+      rollout_options po = opt;
+      if (start > 0) po.initial_velocity_offset = starts[static_cast<std::size_t>(start - 1)];
+      const vec3 f = c.check_pushes * table1_directions()[static_cast<std::size_t>(d)].normalized();
+      trials[static_cast<std::size_t>(k)] =
           push_trial_run(m, act, prob.controller_with(best), flat_terrain{}, semi_implicit_euler{},
-                         bx, opt, torso, vec3(c.check_pushes * d.normalized()));
+                         bx, po, torso, f);
+    });
+    for (int d = 0; d < 8; ++d) {
+      const vec3& dir = table1_directions()[static_cast<std::size_t>(d)];
+      const push_trial& t = trials[static_cast<std::size_t>(d * per_direction)];
       pushes_survived += t.passed ? 1 : 0;
-      pushes.push_back({{"direction", {d.x(), d.y()}},
-                        {"walked", t.passed},
-                        {"time", t.result.time},
-                        {"final_speed", t.final_speed}});
+      nlohmann::json row = {{"direction", {dir.x(), dir.y()}},
+                            {"walked", t.passed},
+                            {"time", t.result.time},
+                            {"final_speed", t.final_speed}};
+      if (c.check_push_starts > 0) {
+        int walked_starts = 0;
+        nlohmann::json times = nlohmann::json::array();
+        for (int k = 1; k < per_direction; ++k) {
+          const push_trial& tk = trials[static_cast<std::size_t>(d * per_direction + k)];
+          walked_starts += tk.passed ? 1 : 0;
+          times.push_back(tk.result.time);
+        }
+        row["perturbed_starts_walked"] = walked_starts;
+        row["perturbed_start_times"] = times;
+        push_directions_from_starts += walked_starts >= required ? 1 : 0;
+        push_starts_walked += walked_starts;
+        std::cerr << "pushes " << c.check_pushes << " N (" << dir.x() << "," << dir.y()
+                  << "): own start " << (t.passed ? "walks" : "falls") << ", " << walked_starts
+                  << " of " << c.check_push_starts << " perturbed starts walk\n";
+      }
+      pushes.push_back(row);
     }
   }
   const walk_check w = judge_walk(r);
@@ -482,6 +527,12 @@ int run_with(const cli& c, const floating_model& m, const std::vector<musculoten
   if (c.check_pushes > 0.0) {
     sum["push_force"] = c.check_pushes;
     sum["pushes_survived"] = pushes_survived;
+    if (c.check_push_starts > 0) {
+      sum["push_starts"] = c.check_push_starts;
+      sum["push_starts_required"] = required;
+      sum["push_directions_from_starts"] = push_directions_from_starts;
+      sum["push_starts_walked"] = push_starts_walked;  // of 8 x push_starts
+    }
     sum["pushes"] = pushes;
   }
   sum["standard_scores"] = scores;

@@ -126,6 +126,9 @@ case "$mode" in
         expect 2 "--weaken: wants NAME=VALUE, got 'GAS'" -- "$exe" --weaken GAS
         expect 2 "--check-pushes: must be in .*, got -100" -- "$exe" --check-pushes -100
         expect 2 "--check-pushes: must be in .*, got nan" -- "$exe" --check-pushes nan
+        expect 2 "--check-push-starts: must be in \[0, 1000\], got -1" -- "$exe" \
+          --check-push-starts -1
+        expect 1 "--check-push-starts needs --check-pushes" -- "$exe" --check-push-starts 10
         expect 2 "--leg-collisions: maybe not in \{off,on\}" -- "$exe" --leg-collisions maybe
         expect 1 "no MTU named 'QUAD'" -- "$exe" --weaken QUAD=0.5 --iterations 0 --horizon 0.01 \
           --check-seconds 0.01 --out "${TMPDIR:-/tmp}/gaitsynth_cli_weaken"
