@@ -23,6 +23,8 @@
 //                 component within TOL of [0.43, 0.04, 0.53] on the unpushed rollout; a
 //                 candidate outside ranks below every one inside, by how far outside:
 //                 rollout/problem_with_constraint.hpp)
+//                 [--step-at-least L]   (ours: the unpushed rollout's mean step length as a
+//                 constraint, at least L m; with --ratio-within the violations add up)
 //                 [--slope DEG] [--mu MU]   (uphill along +x; ground friction, default 10)
 //   wang2009_walk --replay FILE [--check-seconds S] [--out DIR]
 //                 (on the file's slope and friction, scored with the weights it was optimized
@@ -119,9 +121,10 @@ struct cli {
   std::vector<std::string> without;       // terms of eq. 16 left out (weight 0): Figs. 3 and 4
   std::map<std::string, double> weights;  // --weight TERM=W: weights of eq. 16 set by hand
   std::map<std::string, std::pair<double, double>> bounds;  // --bound PARAM=LO:HI
-  std::optional<double> ratio_within;  // --ratio-within TOL: E_ratio's r as a constraint (ours)
-  double slope_deg = 0.0;              // uphill slope along +x (Sec. 5, "Changing terrain")
-  double mu = 10.0;                    // ground friction (Sec. 4.2; 0.8 and 0.3 in Sec. 5)
+  std::optional<double> ratio_within;   // --ratio-within TOL: E_ratio's r as a constraint (ours)
+  std::optional<double> step_at_least;  // --step-at-least L: mean step length >= L m (ours)
+  double slope_deg = 0.0;               // uphill slope along +x (Sec. 5, "Changing terrain")
+  double mu = 10.0;                     // ground friction (Sec. 4.2; 0.8 and 0.3 in Sec. 5)
   bool slope_given = false, mu_given = false;
   bool mpi = false;        // --mpi: evaluate on the processes of MPI_COMM_WORLD
   std::string command;     // the command line, kept in the saved controller
@@ -188,6 +191,11 @@ cli parse(int argc, char** argv) {
                  "TOL: rank every candidate whose power ratio (eq. 13, unpushed rollout) has a "
                  "component more than TOL from [0.43, 0.04, 0.53] below every one within (ours)")
       ->check(example_cli::in_range(1e-6, 1.0));
+  app.add_option("--step-at-least", c.step_at_least,
+                 "L: rank every candidate whose mean step length (E_user's, unpushed rollout) is "
+                 "below L m below every one at or above it (ours; with --ratio-within the two "
+                 "violations add up)")
+      ->check(example_cli::in_range(1e-3, 3.0));
   app.add_option("--slope", c.slope_deg, "uphill slope along +x, degrees")
       ->check(example_cli::in_range(-44.9, 44.9));
   app.add_option("--mu", c.mu, "ground friction (Sec. 4.2: 10)")
@@ -247,6 +255,7 @@ void save(const fs::path& path, const cli& c, const wang2009_controller& ctrl,
   s.info["weights"] = c.weights;
   s.info["bounds"] = c.bounds;
   if (c.ratio_within) s.info["ratio_within"] = *c.ratio_within;
+  if (c.step_at_least) s.info["step_at_least"] = *c.step_at_least;
   s.info["slope_deg"] = c.slope_deg;
   s.info["mu"] = c.mu;
   save_wang2009_controller(path.string(), ctrl, s);
@@ -555,11 +564,19 @@ int optimize_and_check(const floating_model& m, const cli& c, const wang2009_con
     }
   };
   if (c.replay.empty() && c.iterations > 0) {
-    if (c.ratio_within) {
+    if (c.ratio_within || c.step_at_least) {
+      // Both constraints read the main (unpushed) rollout; their violations add up (Deb's rules
+      // rank infeasible candidates by the total). Ratio alone: 0 + v, the same value as before.
       const wang2009::power_ratio term = obj.template part<wang2009_term::ratio>();
-      const double tol = *c.ratio_within;
-      optimize_stage(make_problem_with_constraint(prob, [term, tol](const auto& ctx) {
-        return term.violation(std::get<wang2009_term::ratio>(*ctx.states.objective), tol);
+      const std::optional<double> tol = c.ratio_within, min_step = c.step_at_least;
+      optimize_stage(make_problem_with_constraint(prob, [term, tol, min_step](const auto& ctx) {
+        const auto& acc = *ctx.states.objective;
+        double v = 0.0;
+        if (tol) v += term.violation(std::get<wang2009_term::ratio>(acc), *tol);
+        if (min_step)
+          v += std::max(0.0, *min_step - wang2009::user_gait::step_length(
+                                             std::get<wang2009_term::user>(acc)));
+        return v;
       }));
     } else {
       optimize_stage(prob);

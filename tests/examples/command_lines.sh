@@ -117,6 +117,8 @@ case "$mode" in
       if grep -q -- "--ratio-within" <<<"$help"; then
         expect 2 "--ratio-within: must be in .*, got 0" -- "$exe" --ratio-within 0
         expect 2 "--ratio-within: must be in .*, got nan" -- "$exe" --ratio-within nan
+        expect 2 "--step-at-least: must be in .*, got 0" -- "$exe" --step-at-least 0
+        expect 2 "--step-at-least: must be in .*, got nan" -- "$exe" --step-at-least nan
       fi
       if grep -q -- "--seed" <<<"$help"; then
         expect 2 "--seed: must be in .*, got -3" -- "$exe" --seed -3
