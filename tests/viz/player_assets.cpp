@@ -138,3 +138,20 @@ TEST_CASE("player assets: the page's script is valid JavaScript (node --check)",
   INFO("node --check on the page's script:\n" << messages);
   CHECK(rc == 0);
 }
+
+TEST_CASE("player: a long legend stays inside its plot, in columns (node)",
+          "[viz][html][assets][node]") {
+  const std::string node = find_node();
+  if (node.empty()) {
+    WARN("SKIPPED: node not found on PATH (install Debian's 'nodejs' package)");
+    return;
+  }
+  fs::create_directories(fs::path(GAITSYNTH_BINARY_DIR) / "viz_outputs");
+  const fs::path harness = fs::path(GAITSYNTH_SOURCE_DIR) / "tests" / "viz" / "player_legend.js";
+  const fs::path log = fs::path(GAITSYNTH_BINARY_DIR) / "viz_outputs" / "player_legend.log";
+  const std::string cmd = "'" + node + "' '" + harness.string() + "' '" +
+                          (asset_dir / "player.js").string() + "' > '" + log.string() + "' 2>&1";
+  const int rc = std::system(cmd.c_str());
+  INFO("node " << harness.filename() << ":\n" << read_file(log));
+  CHECK(rc == 0);
+}

@@ -408,8 +408,22 @@ function drawPlot(cv, xlab, ylab, xlo, xhi, series, cursor, note) {
   if (cursor && cursor.x !== undefined) { ctx.strokeStyle = '#111'; ctx.lineWidth = 1; ctx.beginPath(); ctx.moveTo(X(cursor.x), T); ctx.lineTo(X(cursor.x), H - B); ctx.stroke(); }
   if (cursor && cursor.pts) cursor.pts.forEach(function (p) { if (p[1] === null || !isFinite(p[1])) return; ctx.beginPath(); ctx.arc(X(p[0]), Y(p[1]), 3.5, 0, 2 * Math.PI); ctx.fillStyle = p[2]; ctx.fill(); });
   ctx.restore();
-  var lx = L + 6, ly = T + 12;
-  series.forEach(function (s) { if (!s.legend) return; ctx.fillStyle = s.colour; ctx.fillRect(lx, ly - 7, 10, 3); ctx.fillStyle = '#222'; ctx.textAlign = 'left'; ctx.fillText(s.legend, lx + 14, ly - 3); ly += 12; });
+  // Legend: as many rows as the plot is tall, then further columns to the right (the objective
+  // plot's dozen terms overflowed a single column), on a white backing over the curves.
+  var items = series.filter(function (s) { return !!s.legend; });
+  if (items.length) {
+    var rowH = 12, rows = Math.max(1, Math.floor((H - T - B - 6) / rowH)), colW = [];
+    items.forEach(function (s, i) { var c = Math.floor(i / rows); colW[c] = Math.max(colW[c] || 0, 24 + ctx.measureText(s.legend).width); });
+    var colX = [L + 6];
+    for (var c = 1; c < colW.length; c++) colX.push(colX[c - 1] + colW[c - 1]);
+    ctx.fillStyle = 'rgba(255,255,255,0.85)';
+    ctx.fillRect(L + 2, T + 2, colX[colW.length - 1] + colW[colW.length - 1] - L - 6, Math.min(items.length, rows) * rowH + 4);
+    items.forEach(function (s, i) {
+      var lx = colX[Math.floor(i / rows)], ly = T + 12 + (i % rows) * rowH;
+      ctx.fillStyle = s.colour; ctx.fillRect(lx, ly - 7, 10, 3);
+      ctx.fillStyle = '#222'; ctx.textAlign = 'left'; ctx.fillText(s.legend, lx + 14, ly - 3);
+    });
+  }
   if (note) { ctx.fillStyle = '#a00'; ctx.textAlign = 'center'; ctx.fillText(note, L + (W - L - R) / 2, T + (H - T - B) / 2); }
 }
 var selected = [];
@@ -501,7 +515,8 @@ window.addEventListener('keydown', function (e) {
   if (e.target && e.target.tagName === 'SELECT') return;
   if (e.key === ' ') { playing = !playing; e.preventDefault(); }
   else if (e.key === 'ArrowLeft') { playing = false; setFrame(frame - 1); e.preventDefault(); }
-  else if (e.key === 'ArrowRight') { playing = false; setFrame(frame + 1); e.preventDefault(); }
+)gs",
+R"gs(  else if (e.key === 'ArrowRight') { playing = false; setFrame(frame + 1); e.preventDefault(); }
 });
 var drag = null;
 view.addEventListener('pointerdown', function (e) { drag = [e.clientX, e.clientY]; view.setPointerCapture(e.pointerId); view.style.cursor = 'grabbing'; });
@@ -515,8 +530,7 @@ view.addEventListener('pointerup', function () { drag = null; view.style.cursor 
 view.addEventListener('wheel', function (e) { cam.dist = Math.max(0.3, Math.min(200, cam.dist * Math.exp(e.deltaY * 0.001))); e.preventDefault(); }, { passive: false });
 // joint checkboxes
 var jointsDiv = document.getElementById('joints');
-)gs",
-R"gs(D.joint_names.forEach(function (n, j) {
+D.joint_names.forEach(function (n, j) {
   var lab = document.createElement('label'), cb = document.createElement('input');
   cb.type = 'checkbox'; cb.checked = D.plot_joints.indexOf(j) >= 0;
   cb.onchange = function () { selected = []; jointsDiv.querySelectorAll('input').forEach(function (c, k) { if (c.checked) selected.push(k); }); };
