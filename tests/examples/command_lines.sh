@@ -30,6 +30,10 @@
 #                                        wang2009_push_test --controller pushes a saved walker on
 #                                        the slope and friction it was made for (its file's info),
 #                                        and --slope and --mu override them
+#   command_lines.sh push_starts_threads EXE DIR WALKER
+#                                        wang2012_walk --replay WALKER --check-pushes 100
+#                                        --check-push-starts 2 gives the same pushed walks on 1
+#                                        and 2 threads
 #   command_lines.sh resume EXE DIR STEM WAIT_FOR FLAGS... -- OTHER_FLAGS...
 #                                        EXE killed (SIGKILL) after its first checkpoint, then 3
 #                                        times at seeded random moments while resuming, and
@@ -363,6 +367,27 @@ for flag, key in pairs:
     ground "ground: slope 3 deg, mu 0.8" --controller "$dir/stocky_slope12.controller.json" \
       --slope 3 --mu 0.8 "${f[@]}"
     ground "ground: slope 0 deg, mu 10" "${f[@]}"  # SIMBICON
+    ;;
+  push_starts_threads)
+    exe=$1 dir=$2 walker=$3
+    # The same pushed walks on 1 and 2 threads: every (direction, start) walk is its own task.
+    for t in 1 2; do
+      rm -rf "$dir/threads$t"
+      runs "$exe" --replay "$walker" --check-seconds 1 --check-pushes 100 --check-push-starts 2 \
+        --threads $t --out "$dir/threads$t" || exit 1
+    done
+    out=$(python3 -c 'import json, sys
+a, b = (json.load(open(f)) for f in sys.argv[1:3])
+keys = ("pushes", "pushes_survived", "push_directions_from_starts", "push_starts_walked")
+if any(a.get(k) != b.get(k) for k in keys):
+    print("FAIL: --check-push-starts differs between 1 and 2 threads:", [(a.get(k), b.get(k)) for k in keys[1:]])
+elif len(a["pushes"]) != 8 or any(len(p["perturbed_start_times"]) != 2 for p in a["pushes"]):
+    print("FAIL: want 8 directions with 2 perturbed starts each, got", a["pushes"])
+else:
+    print("ok: --check-push-starts 2 on 1 and 2 threads:", a["push_starts_walked"], "of 16 walks")' \
+      "$dir/threads1/summary.json" "$dir/threads2/summary.json" 2>&1)
+    echo "$out"
+    grep -q "^ok:" <<<"$out" || fail=1
     ;;
   *) echo "unknown mode $mode"; exit 2 ;;
 esac
