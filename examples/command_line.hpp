@@ -28,6 +28,7 @@
 #include <map>
 #include <nlohmann/json.hpp>
 #include <sstream>
+#include <stdexcept>
 #include <string>
 #include <thread>
 #include <vector>
@@ -195,11 +196,11 @@ inline CLI::Option* add_seed(CLI::App& app, unsigned long long& seed,
   return app.add_option("--seed", seed, "random seed")->check(integer_in(0, max));
 }
 
-/// --push-direction-step, --push-period and --push-phase: the schedule of a robust optimization's
-/// pushed rollouts (synthesis/robust_variants.hpp), as wang2009_walk and wang2012_walk take it.
-/// direction_step -1 stands for the number of pushed rollouts.
+/// --push-direction-step, --push-period, --push-phase and --push-directions: the schedule of a
+/// robust optimization's pushed rollouts (synthesis/robust_variants.hpp), as wang2009_walk and
+/// wang2012_walk take it. direction_step -1 stands for the number of pushed rollouts.
 inline void add_push_schedule_flags(CLI::App& app, int& direction_step, double& period,
-                                    std::string& phase) {
+                                    std::string& phase, std::vector<int>& directions) {
   app.add_option("--push-direction-step", direction_step,
                  "directions each later push of a pushed rollout turns on (-1: K, so K = 3 "
                  "rollouts push all eight; 0: each rollout pushes its own direction every time, "
@@ -213,6 +214,22 @@ inline void add_push_schedule_flags(CLI::App& app, int& direction_step, double& 
                  "fixed: a pushed rollout's pushes start at 2 s; random: each pushed rollout's "
                  "pushes move by its own phase in [0, push period), drawn anew every iteration")
       ->check(CLI::IsMember({"fixed", "random"}));
+  app.add_option(
+         "--push-directions", directions,
+         "the first direction of each pushed rollout, as indices 0-7 into Table 1's "
+         "(1,0), (1,1), (0,1), (-1,1), (-1,0), (-1,-1), (0,-1), (1,-1), one per "
+         "--robust-pushes (ours: a direction listed twice weighs twice); default 0, 1, 2, ...")
+      ->delimiter(',')
+      ->check(integer_in(0, 7));
+}
+
+/// Throws std::invalid_argument unless --push-directions is empty or names one direction per
+/// pushed rollout.
+inline void check_push_directions(const std::vector<int>& directions, int robust_pushes) {
+  if (!directions.empty() && std::ssize(directions) != robust_pushes)
+    throw std::invalid_argument("--push-directions: " + std::to_string(directions.size()) +
+                                " given, --robust-pushes " + std::to_string(robust_pushes) +
+                                ": give one direction per pushed rollout");
 }
 
 /// The viewer flags (io/viewer_outputs.hpp, docs/viewer.md) as one option group.

@@ -116,6 +116,7 @@ struct cli {
   double start_sigma = 0.05;              // rad/s, the claim tests' perturbation
   double push_force = 100.0;              // N
   int push_direction_step = 1;            // -1: robust_pushes (robust_variant_options)
+  std::vector<int> push_directions;       // --push-directions (robust_variant_options)
   double push_period = 3.0;               // s between a pushed rollout's pushes
   std::string push_phase = "fixed";       // fixed: first push at 2 s; random: redrawn per iteration
   std::vector<std::string> without;       // terms of eq. 16 left out (weight 0): Figs. 3 and 4
@@ -181,7 +182,8 @@ cli parse(int argc, char** argv) {
       ->check(example_cli::integer_in(0, 1000));
   app.add_option("--push-force", c.push_force, "force of those pushes, N")
       ->check(example_cli::in_range(0.0, 10000.0));
-  example_cli::add_push_schedule_flags(app, c.push_direction_step, c.push_period, c.push_phase);
+  example_cli::add_push_schedule_flags(app, c.push_direction_step, c.push_period, c.push_phase,
+                                       c.push_directions);
   app.add_option("--without", c.without, "a term of eq. 16 at weight 0 (repeatable)");
   app.add_option("--weight", weights, "TERM=W: a term's weight of eq. 16 (repeatable)")
       ->check(example_cli::name_equals_number());
@@ -235,6 +237,7 @@ cli parse(int argc, char** argv) {
     c.bounds[v.substr(0, eq)] = {std::stod(v.substr(eq + 1, colon - eq - 1)),
                                  std::stod(v.substr(colon + 1))};
   }
+  example_cli::check_push_directions(c.push_directions, c.robust_pushes);
   c.threads = example_cli::resolve_threads(c.threads);
   c.out_arg = out;
   c.options = example_cli::effective_options(app);
@@ -554,7 +557,8 @@ int optimize_and_check(const floating_model& m, const cli& c, const wang2009_con
                                       .horizon = c.horizon,
                                       .push_direction_step = c.push_direction_step < 0
                                                                  ? c.robust_pushes
-                                                                 : c.push_direction_step};
+                                                                 : c.push_direction_step,
+                                      .push_directions = c.push_directions};
       auto robust = make_problem_with_variants(main, robust_variants(prob, vo));
       const bool random_phase = c.push_phase == "random";
       auto redraw = [&](std::int64_t i) {

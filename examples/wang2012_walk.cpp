@@ -107,7 +107,8 @@ struct cli {
   int robust_pushes = 0;
   double push_force = 100.0;     // N (Sec. 6.4)
   int push_direction_step = -1;  // -1: robust_pushes (robust_variant_options::push_direction_step)
-  double push_period = 3.0;      // s between the training pushes' starts
+  std::vector<int> push_directions;  // --push-directions (robust_variant_options)
+  double push_period = 3.0;          // s between the training pushes' starts
   std::string push_phase = "fixed";  // fixed: first push at 2 s; random: redrawn per iteration
   double check_pushes = 0.0;         // N: the check's 40 s push protocol (0: none)
   int check_push_starts = 0;         // and from this many perturbed starts per direction (0: none)
@@ -169,7 +170,8 @@ cli parse(int argc, char** argv) {
       ->check(example_cli::integer_in(0, 1000));
   app.add_option("--push-force", c.push_force, "force of those pushes, N (Sec. 6.4: 100)")
       ->check(example_cli::in_range(0.0, 100000.0));
-  example_cli::add_push_schedule_flags(app, c.push_direction_step, c.push_period, c.push_phase);
+  example_cli::add_push_schedule_flags(app, c.push_direction_step, c.push_period, c.push_phase,
+                                       c.push_directions);
   app.add_option("--check-pushes", c.check_pushes,
                  "also check Table 1's 40 s push protocol (a 0.4 s push to the torso every 4 s) "
                  "with this force, N, along each of its 8 directions (0: not checked)")
@@ -221,6 +223,7 @@ cli parse(int argc, char** argv) {
   }
   if (c.check_push_starts > 0 && c.check_pushes == 0.0)
     throw std::invalid_argument("--check-push-starts needs --check-pushes");
+  example_cli::check_push_directions(c.push_directions, c.robust_pushes);
   c.threads = example_cli::resolve_threads(c.threads);
   c.out_arg = out;
   c.options = example_cli::effective_options(app);
@@ -345,7 +348,8 @@ int run_with(const cli& c, const floating_model& m, const std::vector<musculoten
                                       .push_direction_step = c.push_direction_step < 0
                                                                  ? c.robust_pushes
                                                                  : c.push_direction_step,
-                                      .push_force_magnitude = true};
+                                      .push_force_magnitude = true,
+                                      .push_directions = c.push_directions};
       auto robust = make_problem_with_variants(prob, robust_variants(prob, vo));
       const bool random_phase = c.push_phase == "random";
       auto redraw = [&](std::int64_t i) {

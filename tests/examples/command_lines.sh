@@ -146,6 +146,9 @@ case "$mode" in
           --push-direction-step 8
         expect 2 "--push-period: must be in .*, got 0" -- "$exe" --push-period 0
         expect 2 "--push-phase: sometimes not in \{fixed,random\}" -- "$exe" --push-phase sometimes
+        expect 2 "--push-directions: must be in \[0, 7\], got 8" -- "$exe" --push-directions 0,8
+        expect 1 "--push-directions: 3 given, --robust-pushes 2: give one direction per pushed" \
+          -- "$exe" --robust-pushes 2 --push-directions 4,4,7
       fi
       if grep -q -- "--sigma" <<<"$help"; then
         expect 2 "--sigma: must be in .*, got 0" -- "$exe" --sigma 0

@@ -93,6 +93,30 @@ TEST_CASE("robust_variants: seeded starts, then pushes on the documented schedul
       CHECK((p.force - 100.0 * table1_directions()[k]).norm() == 0.0);
     }
   }
+  // push_directions: variant k starts where the list says; a direction listed twice is pushed by
+  // two variants (and with step 1 each later push still turns one direction on from there).
+  const robust_variant_options lo{.pushes = 3,
+                                  .push_period = 4.0,
+                                  .horizon = 14.0,
+                                  .push_direction_step = 0,
+                                  .push_directions = {4, 7, 4}};
+  auto listed = robust_variants(prob, lo);
+  REQUIRE(listed.size() == 3);
+  const int want[] = {4, 7, 4};
+  for (int pass = 0; pass < 2; ++pass) {
+    for (int k = 0; k < 3; ++k) {
+      REQUIRE(listed[k].options.pushes.size() >= 3);
+      for (std::size_t i = 1; i < listed[k].options.pushes.size(); ++i)
+        CHECK((listed[k].options.pushes[i].force - 100.0 * table1_directions()[want[k]]).norm() ==
+              0.0);
+    }
+    redraw_push_phases(listed, prob, lo, 5);  // moved pushes keep their listed directions
+  }
+  const auto turning = robust_variants(prob, {.pushes = 1, .push_directions = {6}});
+  REQUIRE(turning[0].options.pushes.size() == 4);
+  for (int i = 0; i < 3; ++i)
+    CHECK((turning[0].options.pushes[1 + i].force - 100.0 * table1_directions()[(6 + i) % 8])
+              .norm() == 0.0);
   // push_force_magnitude: 100 N along the diagonals too, not 100 N per component.
   const auto unit = robust_variants(prob, {.pushes = 2, .push_force_magnitude = true});
   REQUIRE(unit.size() == 2);
@@ -169,4 +193,15 @@ TEST_CASE("robust_variants: bad options are refused naming the value") {
   CHECK_THROWS_WITH(robust_variants(prob, {.pushes = 1, .push_body = "tail"}),
                     Catch::Contains("tail"));
   CHECK_THROWS_WITH(robust_variants(prob, {.horizon = -1.0}), Catch::Contains("horizon"));
+  CHECK_THROWS_WITH(robust_variants(prob, {.pushes = 2, .push_directions = {1, 8}}),
+                    Catch::Contains("push_directions") && Catch::Contains("got 8"));
+  CHECK_THROWS_WITH(robust_variants(prob, {.pushes = 2, .push_directions = {-1, 0}}),
+                    Catch::Contains("push_directions") && Catch::Contains("got -1"));
+  CHECK_THROWS_WITH(
+      robust_variants(prob, {.pushes = 3, .push_directions = {1, 2}}),
+      Catch::Contains("one direction per pushed variant (3)") && Catch::Contains("got 2"));
+  // redraw_push_phases meets the same check (its options need not be those of robust_variants).
+  auto v = robust_variants(prob, {.pushes = 2});
+  CHECK_THROWS_WITH(redraw_push_phases(v, prob, {.pushes = 2, .push_directions = {0, 9}}, 1),
+                    Catch::Contains("got 9"));
 }

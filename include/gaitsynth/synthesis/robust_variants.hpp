@@ -7,7 +7,9 @@
 /// first_push, with push_force newtons in the eight horizontal directions of Wang et al. 2009
 /// Table 1 (variant k starting at direction k, each later push turning push_direction_step
 /// directions on), as far as the horizon allows: with step = pushes, K variants of n pushes each
-/// spread over the eight directions instead of the first K + n - 1 of them. Every candidate meets
+/// spread over the eight directions instead of the first K + n - 1 of them. push_directions, where
+/// given, names each pushed variant's first direction instead, so that a direction listed twice
+/// weighs twice in the cost (ours: to train a walker's weak directions). Every candidate meets
 /// the same perturbations, so the cost stays a deterministic function of the parameters whatever
 /// the thread count.
 ///
@@ -49,16 +51,30 @@ struct robust_variant_options {
   /// false: push_force per component, as Table 1 reports forces ((1, 1) at 100 N pushes 141 N);
   /// true: push_force newtons along every direction (Wang 2012 Sec. 6.4's "100 N pushes").
   bool push_force_magnitude = false;
+  /// The first direction (an index into table1_directions) of each pushed variant, one per
+  /// variant; empty: variant k starts at direction k mod 8.
+  std::vector<int> push_directions = {};
 };
+
+namespace detail {
+inline void check_push_directions(const robust_variant_options& o) {
+  check_argument(o.push_directions.empty() || std::ssize(o.push_directions) == o.pushes,
+                 "robust_variants: push_directions must name one direction per pushed variant (",
+                 o.pushes, "), got ", o.push_directions.size());
+  for (const int d : o.push_directions)
+    check_argument(d >= 0 && d < 8, "robust_variants: push_directions must be in [0, 7], got ", d);
+}
+}  // namespace detail
 
 /// Pushed variant k's pushes on `body` (k from 0 among the pushed variants), the first starting at
 /// `first_push`: every push_period, as long as it ends before the horizon.
 inline std::vector<push> variant_pushes(int body, const robust_variant_options& o, int k,
                                         double first_push) {
   std::vector<push> out;
+  const int first = o.push_directions.empty() ? k : o.push_directions[static_cast<std::size_t>(k)];
   for (int i = 0; first_push + o.push_period * i + o.push_duration < o.horizon; ++i) {
     const vec3& t =
-        table1_directions()[static_cast<std::size_t>((k + i * o.push_direction_step) % 8)];
+        table1_directions()[static_cast<std::size_t>((first + i * o.push_direction_step) % 8)];
     const vec3 d = o.push_force_magnitude ? vec3(t.normalized()) : t;
     out.push_back(push{body, o.push_force * d, first_push + o.push_period * i, o.push_duration});
   }
@@ -67,7 +83,8 @@ inline std::vector<push> variant_pushes(int body, const robust_variant_options& 
 
 /// The variants of `prob` (a rollout_problem: its `character` and `options` are read) that `o`
 /// asks for, starts first. Throws std::invalid_argument for a negative count, a non-finite or
-/// negative sigma, force or time, a non-positive period or duration, or an unknown body.
+/// negative sigma, force or time, a non-positive period or duration, an unknown body, or
+/// push_directions of another length than `pushes` or outside [0, 7].
 template <class Problem>
 std::vector<Problem> robust_variants(const Problem& prob, const robust_variant_options& o) {
   check_argument(o.starts >= 0 && o.pushes >= 0,
@@ -85,6 +102,7 @@ std::vector<Problem> robust_variants(const Problem& prob, const robust_variant_o
                  "robust_variants: push_direction_step must be >= 0, got ", o.push_direction_step);
   check_argument(std::isfinite(o.horizon) && o.horizon > 0.0,
                  "robust_variants: horizon must be finite and > 0, got ", o.horizon);
+  detail::check_push_directions(o);
   std::vector<Problem> out;
   for (const Eigen::VectorXd& dv :
        joint_velocity_perturbations(prob.character, o.starts, o.start_sigma, o.seed)) {
@@ -132,6 +150,7 @@ void redraw_push_phases(std::vector<Problem>& variants, const Problem& prob,
   check_argument(std::ssize(variants) == o.starts + o.pushes, "redraw_push_phases: expected ",
                  o.starts + o.pushes, " variants (starts + pushes), got ", variants.size());
   if (o.pushes == 0) return;
+  detail::check_push_directions(o);
   const int body = prob.character.body_index(o.push_body);
   const std::vector<double> phase = push_phases(o, seed);
   for (int k = 0; k < o.pushes; ++k) {
