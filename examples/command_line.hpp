@@ -223,6 +223,18 @@ inline void add_push_schedule_flags(CLI::App& app, int& direction_step, double& 
       ->check(integer_in(0, 7));
 }
 
+/// --keep-means: every checkpoint also keeps CMA's mean as STEM.meanN.json (kept_mean_suffix),
+/// beside STEM.mean.json, which each checkpoint overwrites: a stage's means can then be compared
+/// after the run (a run's best mean need not be its last).
+inline void add_keep_means(CLI::App& app, bool& keep) {
+  app.add_flag("--keep-means", keep,
+               "also keep CMA's mean at every checkpoint as STEM.meanN.json (N: the iteration; "
+               "STEM.mean.json is overwritten at each)");
+}
+inline std::string kept_mean_suffix(long long iteration) {
+  return ".mean" + std::to_string(iteration) + ".json";
+}
+
 /// Throws std::invalid_argument unless --push-directions is empty or names one direction per
 /// pushed rollout.
 inline void check_push_directions(const std::vector<int>& directions, int robust_pushes) {

@@ -117,6 +117,7 @@ struct cli {
   double push_force = 100.0;              // N
   int push_direction_step = 1;            // -1: robust_pushes (robust_variant_options)
   std::vector<int> push_directions;       // --push-directions (robust_variant_options)
+  bool keep_means = false;                // --keep-means: STEM.meanN.json at every checkpoint
   double push_period = 3.0;               // s between a pushed rollout's pushes
   std::string push_phase = "fixed";       // fixed: first push at 2 s; random: redrawn per iteration
   std::vector<std::string> without;       // terms of eq. 16 left out (weight 0): Figs. 3 and 4
@@ -184,6 +185,7 @@ cli parse(int argc, char** argv) {
       ->check(example_cli::in_range(0.0, 10000.0));
   example_cli::add_push_schedule_flags(app, c.push_direction_step, c.push_period, c.push_phase,
                                        c.push_directions);
+  example_cli::add_keep_means(app, c.keep_means);
   app.add_option("--without", c.without, "a term of eq. 16 at weight 0 (repeatable)");
   app.add_option("--weight", weights, "TERM=W: a term's weight of eq. 16 (repeatable)")
       ->check(example_cli::name_equals_number());
@@ -513,6 +515,9 @@ int optimize_and_check(const floating_model& m, const cli& c, const wang2009_con
     auto save_cma_mean = [&] {
       const Eigen::VectorXd mu = space.clamp_user(opt_cma.mean_user());
       save(stem + ".mean.json", c, ctrl, mu, std::numeric_limits<double>::quiet_NaN());
+      if (c.keep_means)
+        save(stem + example_cli::kept_mean_suffix(opt_cma.status().iteration), c, ctrl, mu,
+             std::numeric_limits<double>::quiet_NaN());
     };
     // The best point so far is saved with every checkpoint, so a stopped run leaves a controller.
     auto keep_best = [&](const optimizer_status& st) {
@@ -528,6 +533,7 @@ int optimize_and_check(const floating_model& m, const cli& c, const wang2009_con
     if (save_mean) save_cma_mean();
   };
   auto optimize = [&](const auto& problem, auto&& before_iteration, bool save_mean) {
+    save_mean = save_mean || c.keep_means;
 #ifdef GAITSYNTH_HAVE_MPI
     if (c.mpi) {
       mpi_evaluator eval(MPI_COMM_WORLD, {.threads = c.threads});

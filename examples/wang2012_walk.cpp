@@ -108,6 +108,7 @@ struct cli {
   double push_force = 100.0;     // N (Sec. 6.4)
   int push_direction_step = -1;  // -1: robust_pushes (robust_variant_options::push_direction_step)
   std::vector<int> push_directions;  // --push-directions (robust_variant_options)
+  bool keep_means = false;           // --keep-means: STEM.meanN.json at every checkpoint
   double push_period = 3.0;          // s between the training pushes' starts
   std::string push_phase = "fixed";  // fixed: first push at 2 s; random: redrawn per iteration
   double check_pushes = 0.0;         // N: the check's 40 s push protocol (0: none)
@@ -172,6 +173,7 @@ cli parse(int argc, char** argv) {
       ->check(example_cli::in_range(0.0, 100000.0));
   example_cli::add_push_schedule_flags(app, c.push_direction_step, c.push_period, c.push_phase,
                                        c.push_directions);
+  example_cli::add_keep_means(app, c.keep_means);
   app.add_option("--check-pushes", c.check_pushes,
                  "also check Table 1's 40 s push protocol (a 0.4 s push to the torso every 4 s) "
                  "with this force, N, along each of its 8 directions (0: not checked)")
@@ -277,7 +279,8 @@ int run_with(const cli& c, const floating_model& m, const std::vector<musculoten
   Eigen::VectorXd best = Eigen::Map<const Eigen::VectorXd>(x0.data(), std::ssize(x0));
   double best_cost = prob.cost(best, c.horizon);
   optimization_result res;
-  auto save = [&](const Eigen::VectorXd& x, double cost, const char* suffix = ".controller.json") {
+  auto save = [&](const Eigen::VectorXd& x, double cost,
+                  const std::string& suffix = ".controller.json") {
     wang2012_saved_controller s;
     s.target_speed = speed;
     s.cost = cost;
@@ -293,6 +296,7 @@ int run_with(const cli& c, const floating_model& m, const std::vector<musculoten
   // before_iteration(i) runs before iteration i + 1 (from 0; after a resume, first with the
   // checkpoint's count): where --push-phase random redraws the pushes.
   auto optimize = [&](const auto& problem, auto&& before_iteration, bool save_mean) {
+    save_mean = save_mean || c.keep_means;
     thread_pool_evaluator pool(c.threads);
     problem_contexts ctx(problem, pool.thread_count());
     problem_cost cost(problem, c.horizon, ctx);
@@ -319,18 +323,23 @@ int run_with(const cli& c, const floating_model& m, const std::vector<musculoten
     // The distribution's mean, clipped to the bounds (its cost is not evaluated: null).
     const parameter_space space = wang2012_search_space(x0);
     auto mean = [&] { return space.clamp_user(cma.mean_user()); };
+    auto save_mean_now = [&] {
+      save(mean(), std::numeric_limits<double>::quiet_NaN(), ".mean.json");
+      if (c.keep_means)
+        save(mean(), std::numeric_limits<double>::quiet_NaN(),
+             example_cli::kept_mean_suffix(cma.status().iteration));
+    };
     auto keep_best = [&](const optimizer_status& st) {
       if (st.iteration % 10 == 0 && std::isfinite(cma.best_value()))
         save(cma.best_x(), cma.best_value());
-      if (save_mean && st.iteration % 10 == 0)
-        save(mean(), std::numeric_limits<double>::quiet_NaN(), ".mean.json");
+      if (save_mean && st.iteration % 10 == 0) save_mean_now();
       before_iteration(st.iteration);
     };
     res = minimize(cma, cost, pool, ro, keep_best);
     best = res.x;
     best_cost = res.value;
     save(best, best_cost);
-    if (save_mean) save(mean(), std::numeric_limits<double>::quiet_NaN(), ".mean.json");
+    if (save_mean) save_mean_now();
   };
   if (c.replay.empty() && c.iterations > 0) {
     if (c.robust_starts == 0 && c.robust_pushes == 0) {

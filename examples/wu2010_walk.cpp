@@ -207,6 +207,7 @@ struct cli {
   unsigned long long seed = 1;
   fs::path out;
   bool resume = false;
+  bool keep_means = false;  // --keep-means: STEM.meanN.json at every checkpoint
   bool flat = false;
   std::string init, replay;
   double horizon = 8 * 0.55;  // s: 4 locomotion cycles of 2 t_h (Sec. 8.3)
@@ -259,6 +260,7 @@ cli parse(int argc, char** argv) {
       ->check(example_cli::integer_in(0, 10000000));
   example_cli::add_threads(app, c.threads);
   example_cli::add_seed(app, c.seed);
+  example_cli::add_keep_means(app, c.keep_means);
   app.add_option("--out", out, "run folder (default out/wu2010_walk/<UTC time>/)");
   app.add_option("--resume", resume, "continue the run in this folder with its recorded options");
   app.add_option("--init", c.init,
@@ -661,7 +663,7 @@ int run(const cli& c) {
                                        changed);
     }
     auto save = [&](const Eigen::VectorXd& x, double cost, const optimizer_status& st,
-                    const char* suffix = ".controller.json") {
+                    const std::string& suffix = ".controller.json") {
       nlohmann::ordered_json info;
       info["h_max"] = helper ? x[static_cast<Eigen::Index>(ctrl.helper_offset())] : 0.0;
       info["helper_force"] = helper;
@@ -694,6 +696,9 @@ int run(const cli& c) {
     auto save_mean = [&](const optimizer_status& st) {
       save(space.clamp_user(cma.mean_user()), std::numeric_limits<double>::quiet_NaN(), st,
            ".mean.json");
+      if (c.keep_means)
+        save(space.clamp_user(cma.mean_user()), std::numeric_limits<double>::quiet_NaN(), st,
+             example_cli::kept_mean_suffix(st.iteration));
     };
     thread_pool_evaluator pool(c.threads);
     problem_contexts ctx(robust, pool.thread_count());

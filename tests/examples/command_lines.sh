@@ -34,6 +34,11 @@
 #                                        wang2012_walk --replay WALKER --check-pushes 100
 #                                        --check-push-starts 2 gives the same pushed walks on 1
 #                                        and 2 threads
+#   command_lines.sh keep_means EXE DIR STEM FLAGS...
+#                                        EXE FLAGS --iterations 20 --keep-means keeps CMA's mean at
+#                                        10 and 20 as STEM.mean10.json and STEM.mean20.json (the
+#                                        last STEM.mean.json, the first another), and without it
+#                                        none is kept and the best is the same
 #   command_lines.sh resume EXE DIR STEM WAIT_FOR FLAGS... -- OTHER_FLAGS...
 #                                        EXE killed (SIGKILL) after its first checkpoint, then 3
 #                                        times at seeded random moments while resuming, and
@@ -183,6 +188,31 @@ case "$mode" in
       [[ $fail -eq 0 ]] && echo "ok: $name"
       [[ $before -ne 0 ]] && fail=1
     done
+    ;;
+  keep_means)
+    exe=$1 dir=$2 stem=$3
+    shift 3
+    rm -rf "$dir"
+    if runs "$exe" "$@" --iterations 20 --keep-means --out "$dir/kept" &&
+       runs "$exe" "$@" --iterations 20 --out "$dir/plain"; then
+      k=$dir/kept/$stem
+      if [[ ! -f $k.mean10.json || ! -f $k.mean20.json ]]; then
+        echo "FAIL: $(basename "$exe") --keep-means kept no $stem.mean10.json or .mean20.json"
+        fail=1
+      else
+        cmp -s "$k.mean20.json" "$k.mean.json" ||
+          { echo "FAIL: $stem.mean20.json is not the last mean"; fail=1; }
+        cmp -s "$k.mean10.json" "$k.mean20.json" &&
+          { echo "FAIL: the means kept at 10 and 20 are the same"; fail=1; }
+      fi
+      compgen -G "$dir/plain/$stem.mean[0-9]*.json" >/dev/null &&
+        { echo "FAIL: means kept without --keep-means"; fail=1; }
+      # (but for the command the saved best records)
+      kept() { grep -v '"command"' "$1"; }
+      diff -q <(kept "$k.controller.json") <(kept "$dir/plain/$stem.controller.json") >/dev/null ||
+        { echo "FAIL: --keep-means changed the best"; fail=1; }
+      [[ $fail -eq 0 ]] && echo "ok: $(basename "$exe") --keep-means"
+    fi
     ;;
   resume)
     # resume EXE DIR STEM WAIT_FOR FLAGS...: EXE with FLAGS, whole and killed (SIGKILL) once
