@@ -600,7 +600,7 @@ TEST_CASE(
 // The same robust goal with longer steps and a straighter torso (data/wang2009/runs/
 // stocky_natural120/, CMA's mean at 90): from the upright walker with 0.5 m steps, push stages at
 // 50, 80, 100 and 120 N with the mean step length (>= 0.5 m) and the ratio as constraints.
-TEST_CASE("wang2009: the natural-stride robust walker walks 100 s with the human ratio",
+TEST_CASE("wang2009: the longer-stride robust walker walks 100 s with the human ratio",
           "[wang2009][claim]") {
   check_walker({"stocky_natural120.controller.json",
                 1.949,
@@ -612,7 +612,7 @@ TEST_CASE("wang2009: the natural-stride robust walker walks 100 s with the human
                 17.5});
 }
 
-TEST_CASE("wang2009: the natural-stride robust walker survives its Table 1 forces",
+TEST_CASE("wang2009: the longer-stride robust walker survives its Table 1 forces",
           "[wang2009][claim]") {
   // The page's scan (5 N steps) from its own start: at or above the library's SIMBICON on the
   // same grid (75, 110, 160, 95, 160, 125, 165, 120) in every direction (equal in (0,-1)).
@@ -621,7 +621,7 @@ TEST_CASE("wang2009: the natural-stride robust walker survives its Table 1 force
 }
 
 TEST_CASE(
-    "wang2009: the natural-stride robust walker, SIMBICON's force in 7 of 8 from perturbed "
+    "wang2009: the longer-stride robust walker, SIMBICON's force in 7 of 8 from perturbed "
     "starts",
     "[wang2009][claim]") {
   // The issue's robust goal: from 10 perturbed starts (8 of 10 at every force up to these) at or
